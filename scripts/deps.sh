@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Usage: scripts/deps.sh [demo|test]
+# Installs the Debian 12 packages that the demo or the test suite needs and that are missing; installs
+# nothing when all are present. As root it runs apt-get itself; otherwise through sudo.
+set -euo pipefail
+
+demo=(cmake make gcc pkg-config python3 libx11-dev libgl1-mesa-dri libglx-mesa0 xvfb xauth
+      libxrandr2 libxcursor1 libxi6 libxinerama1 libxext6 libxrender1 libx11-xcb1)
+test=("${demo[@]}" g++ clang tcc libosmesa6-dev libstb-dev xdotool)
+
+case "${1:-test}" in
+    demo) wanted=("${demo[@]}") ;;
+    test) wanted=("${test[@]}") ;;
+    *) echo "usage: $0 [demo|test]" >&2; exit 2 ;;
+esac
+# raylib comes from PyPI wheels (scripts/bootstrap-raylib.sh), fetched with pip.
+python3 -m pip --version >/dev/null 2>&1 || wanted+=(python3-pip)
+
+missing=()
+for package in "${wanted[@]}"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "deps: all ${#wanted[@]} packages present"
+    exit 0
+fi
+
+echo "deps: installing ${missing[*]}"
+if ! command -v apt-get >/dev/null 2>&1; then
+    echo "deps: no apt-get here; install the equivalents of: ${missing[*]}" >&2
+    exit 1
+fi
+as_root=()
+if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null 2>&1 || { echo "deps: run as root or install sudo (missing: ${missing[*]})" >&2; exit 1; }
+    as_root=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+# Try with the package lists as they are; refresh them once if that fails (new machine, stale lists).
+if ! "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"; then
+    "${as_root[@]}" apt-get update -q
+    "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,25 @@
+# Included by tests/CMakeLists.txt: the WSAD example in a real X server (Xvfb) with real key events (xdotool).
+if(NOT TARGET wsad)
+  message(STATUS "motus: example tests skipped (no raylib, or MOTUS_BUILD_EXAMPLES=OFF)")
+  return()
+endif()
+# Each key held for a second must move the particle its way; the script reads the printed final state.
+foreach(key w a s d)
+  add_test(NAME example.wsad_key_${key}
+    COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/example_wsad.sh" $<TARGET_FILE:wsad> ${key}
+            "${CMAKE_CURRENT_BINARY_DIR}/example")
+  set_tests_properties(example.wsad_key_${key} PROPERTIES LABELS example RESOURCE_LOCK x_server TIMEOUT 120)
+endforeach()
+# The headless run the demo makes: a fixed number of frames, scripted input, a screenshot, checked on pixels.
+find_path(MOTUS_STB_INCLUDE_DIR stb/stb_image.h)
+if(NOT MOTUS_STB_INCLUDE_DIR)
+  message(WARNING "motus: example.wsad_screenshot needs stb_image (Debian libstb-dev); skipped")
+  return()
+endif()
+add_executable(motus_screenshot_probe screenshot_probe.c)
+target_include_directories(motus_screenshot_probe PRIVATE "${MOTUS_STB_INCLUDE_DIR}")
+target_link_libraries(motus_screenshot_probe PRIVATE m)
+add_test(NAME example.wsad_screenshot
+  COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/example_screenshot.sh" $<TARGET_FILE:wsad>
+          $<TARGET_FILE:motus_screenshot_probe> "${CMAKE_CURRENT_BINARY_DIR}/example/wsad_autopilot.png")
+set_tests_properties(example.wsad_screenshot PROPERTIES LABELS example RESOURCE_LOCK x_server TIMEOUT 120)
