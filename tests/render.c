@@ -105,7 +105,7 @@ static expectation constant_acceleration(motus_vec2 x0, motus_vec2 v0, double ax
    `every` frames; returns the final particle. The force is cleared and re-added each frame, as the example
    does with a held key. */
 static motus_particle push(motus_vec2 x0, motus_vec2 v0, double mass, motus_vec2 force, int steps, int every) {
-    motus_particle p;
+    motus_particle p = {{0, 0}, {0, 0}, {0, 0}, 0};
     int n;
     ENSURE_EQ_INT(motus_particle_init(&p, x0, (motus_real)mass), MOTUS_OK);
     p.velocity = v0;
@@ -125,7 +125,7 @@ static void report(const char *name) {
 
 TEST(from_rest_under_constant_force) {
     /* D held for 1.5 s: a = 100/2 = 50 px/s^2, x = 400 + 25 t^2 = 456.25 at t = 1.5 (456.875 discrete). */
-    motus_particle p;
+    motus_particle p = {{0, 0}, {0, 0}, {0, 0}, 0};
     if (!open_canvases()) { ENSURE(!"OSMesa canvas"); return; }
     start_trail();
     p = push(motus_v2(400, 300), motus_v2(0, 0), 2, motus_v2(100, 0), 90, 6);
@@ -137,7 +137,7 @@ TEST(from_rest_under_constant_force) {
 
 TEST(constant_velocity_without_force) {
     /* No force: x = x0 + v0*t exactly, for the method too (its error term is a*h*t/2 = 0). */
-    motus_particle p;
+    motus_particle p = {{0, 0}, {0, 0}, {0, 0}, 0};
     if (!open_canvases()) { ENSURE(!"OSMesa canvas"); return; }
     start_trail();
     p = push(motus_v2(100, 500), motus_v2(240, -160), 2, motus_v2(0, 0), 150, 10);
@@ -206,7 +206,7 @@ static double drag_continuous(double x0, double v0, double a, double k, double t
 
 TEST(damping_per_step_matches_linear_drag) {
     const double d = 0.99, k = -log(d) / H, a = 50, v0 = -30;
-    motus_particle p;
+    motus_particle p = {{0, 0}, {0, 0}, {0, 0}, 0};
     int n;
     if (!open_canvases()) { ENSURE(!"OSMesa canvas"); return; }
     start_trail();
@@ -238,7 +238,7 @@ TEST(damping_per_step_matches_linear_drag) {
 /* One second at `rate` steps per second; `exact` picks the exact drag stepper, otherwise the reference's
    step + damp_per_step(0.99). Returns the rendered centroid's x. */
 static double one_second_at(int rate, int exact, double k, motus_particle *out) {
-    motus_particle p;
+    motus_particle p = {{0, 0}, {0, 0}, {0, 0}, 0};
     double cx, cy;
     int n;
     motus_particle_init(&p, motus_v2(100, 100 + rate), 2);
@@ -263,7 +263,7 @@ TEST(exact_drag_is_frame_rate_independent) {
     const double k = -log(0.99) * 60, expected = drag_continuous(100, 0, 50, k, 1);
     const int rates[3] = {30, 60, 144};
     double exact_x[3], per_step_x[3];
-    motus_particle p;
+    motus_particle p = {{0, 0}, {0, 0}, {0, 0}, 0};
     int i;
     if (!open_canvases()) { ENSURE(!"OSMesa canvas"); return; }
     start_trail();

@@ -36,7 +36,7 @@ static motus_real infinity(void) { return (motus_real)HUGE_VAL; }
 
 /* A particle with every field set to a distinct value, to see that a rejected call changed nothing. */
 static motus_particle sample_particle(void) {
-    motus_particle p;
+    motus_particle p = {{0, 0}, {0, 0}, {0, 0}, 0};
     memset(&p, 0, sizeof p);
     p.position = motus_v2(400, 300);
     p.velocity = motus_v2(3, -4);
@@ -57,10 +57,12 @@ TEST(version_macros) {
 
 TEST(vec2_layout_matches_raylib) {
 #ifndef MOTUS_DOUBLE
-    /* Reinterpret an array both ways, as a game passing particle positions to raylib would. */
+    /* An array copied byte for byte, as a game handing particle positions to raylib would. */
     motus_vec2 points[2];
-    Vector2 *as_raylib = (Vector2 *)(void *)points;
+    Vector2 as_raylib[2];
+    points[0] = motus_v2(5, 6);
     points[1] = motus_v2(7, 8);
+    memcpy(as_raylib, points, sizeof points);
     ENSURE(as_raylib[1].x == 7.0f && as_raylib[1].y == 8.0f);
 #endif
     ENSURE_EQ_INT(sizeof(motus_vec2), 2 * sizeof(motus_real));
@@ -143,7 +145,7 @@ TEST(immovable_particle_ignores_forces) {
 }
 
 TEST(mass_getter) {
-    motus_particle p;
+    motus_particle p = {{0, 0}, {0, 0}, {0, 0}, 0};
     motus_particle_init(&p, motus_v2(0, 0), 4);
     ENSURE(motus_particle_mass(&p) == 4);
     ENSURE(motus_particle_mass(NULL) != motus_particle_mass(NULL)); /* NaN */
@@ -170,7 +172,7 @@ TEST(check_reports_broken_fields) {
 }
 
 TEST(add_and_clear_forces) {
-    motus_particle p;
+    motus_particle p = {{0, 0}, {0, 0}, {0, 0}, 0};
     motus_particle_init(&p, motus_v2(0, 0), 2);
     ENSURE_EQ_INT(motus_particle_add_force(&p, motus_v2(0, -100)), MOTUS_OK); /* W */
     ENSURE_EQ_INT(motus_particle_add_force(&p, motus_v2(100, 0)), MOTUS_OK);  /* D */
@@ -287,7 +289,7 @@ TEST(damp_per_step) {
 
 /* Coast for one second at `rate` steps per second with per-second damping; return the speed left. */
 static motus_real speed_after_one_second(int rate, motus_real retained_per_second) {
-    motus_particle p;
+    motus_particle p = {{0, 0}, {0, 0}, {0, 0}, 0};
     int i;
     motus_particle_init(&p, motus_v2(0, 0), 1);
     p.velocity = motus_v2(100, 0);
@@ -340,7 +342,7 @@ static double drag_velocity(double v0, double a, double k, double t) {
 
 /* Run the exact drag stepper for one second at `rate` and compare with the closed form. */
 static void check_linear_drag(double k, int rate) {
-    motus_particle p;
+    motus_particle p = {{0, 0}, {0, 0}, {0, 0}, 0};
     const double a = 50, v0 = -20, x0 = 400;
     int i;
     motus_particle_init(&p, motus_v2((motus_real)x0, 300), 2);
