@@ -64,8 +64,10 @@
 #define MOTUS_VERSION (MOTUS_VERSION_MAJOR * 10000 + MOTUS_VERSION_MINOR * 100 + MOTUS_VERSION_PATCH)
 
 #include <math.h>
-#include <stdint.h>
-#include <string.h> /* memcpy, which compilers turn into a register move, for the bit-level finite check */
+#include <stdint.h> /* fixed-width integers for the bit-level finite check; no library code */
+#ifdef __cplusplus
+#include <string.h> /* memcpy, for the same check in C++ */
+#endif
 
 /* =================================================================================================
    Configuration
@@ -151,10 +153,22 @@ MOTUS_API motus_real motus_vec2_dot(motus_vec2 a, motus_vec2 b) { return a.x * b
 MOTUS_API motus_real motus_vec2_length(motus_vec2 v) { return MOTUS_SQRT(motus_vec2_dot(v, v)); }
 
 /* True unless x is NaN or +-Inf. Reads the exponent bits instead of calling isfinite() so that the check
-   survives -ffast-math, under which compilers assume NaN never happens and fold isfinite() to 1. */
+   survives -ffast-math, under which compilers assume NaN never happens and fold isfinite() to 1. C reads the
+   bits through a union (defined behaviour since C99 TC3); C++ forbids that and gets memcpy, which compilers
+   turn into a register move. */
 MOTUS_API int motus_real_is_finite(motus_real x) {
+#ifdef __cplusplus
     motus__bits bits;
     memcpy(&bits, &x, sizeof bits);
+#else
+    union {
+        motus_real real;
+        motus__bits bits;
+    } pun;
+    motus__bits bits;
+    pun.real = x;
+    bits = pun.bits;
+#endif
     return (bits & MOTUS__EXPONENT_MASK) != MOTUS__EXPONENT_MASK;
 }
 MOTUS_API int motus_vec2_is_finite(motus_vec2 v) { return motus_real_is_finite(v.x) && motus_real_is_finite(v.y); }
