@@ -241,6 +241,19 @@ MOTUS_API motus_result motus_particle_clear_forces(motus_particle *particle) {
 
 MOTUS_API int motus__is_positive_finite(motus_real x) { return motus_real_is_finite(x) && x > 0; }
 
+/* Every stepper ends here: store the new state only if it is finite. Otherwise nothing is written, and the
+   result says whether the particle came in broken (NaN/Inf in a field) or the step itself overflowed. */
+MOTUS_API motus_result motus__commit_step(motus_particle *particle, motus_vec2 velocity, motus_vec2 position) {
+    motus_result state;
+    if (!motus_vec2_is_finite(velocity) || !motus_vec2_is_finite(position)) {
+        state = motus_particle_check(particle);
+        return state != MOTUS_OK ? state : MOTUS_ERROR_OVERFLOW;
+    }
+    particle->velocity = velocity;
+    particle->position = position;
+    return MOTUS_OK;
+}
+
 /* Semi-implicit (symplectic) Euler, the step the textbook teaches:
        v(t+dt) = v(t) + F * (1/m) * dt
        x(t+dt) = x(t) + v(t+dt) * dt        <- the *new* velocity: that is what makes it semi-implicit
@@ -250,20 +263,12 @@ MOTUS_API int motus__is_positive_finite(motus_real x) { return motus_real_is_fin
    Does not clear the force accumulator. */
 MOTUS_API motus_result motus_particle_step(motus_particle *particle, motus_real dt) {
     motus_vec2 velocity, position;
-    motus_result state;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (particle->inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
     velocity = motus_vec2_add(particle->velocity, motus_vec2_scale(particle->force, particle->inverse_mass * dt));
     position = motus_vec2_add(particle->position, motus_vec2_scale(velocity, dt));
-    if (!motus_vec2_is_finite(velocity) || !motus_vec2_is_finite(position)) {
-        /* Cold path: say whether the particle came in broken or the step itself overflowed. */
-        state = motus_particle_check(particle);
-        return state != MOTUS_OK ? state : MOTUS_ERROR_OVERFLOW;
-    }
-    particle->velocity = velocity;
-    particle->position = position;
-    return MOTUS_OK;
+    return motus__commit_step(particle, velocity, position);
 }
 
 MOTUS_API int motus__damping_is_valid(motus_real factor) { return factor >= 0 && factor <= 1; } /* NaN fails */
@@ -331,7 +336,6 @@ MOTUS_API motus_result motus_particle_step_linear_drag(motus_particle *particle,
                                                        motus_real dt) {
     motus_real u, decay, phi1, phi2;
     motus_vec2 acceleration, velocity, position;
-    motus_result state;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (!motus_real_is_finite(drag_per_second)) return MOTUS_ERROR_NOT_FINITE;
@@ -345,13 +349,7 @@ MOTUS_API motus_result motus_particle_step_linear_drag(motus_particle *particle,
     position = motus_vec2_add(particle->position,
                               motus_vec2_add(motus_vec2_scale(particle->velocity, dt * phi1),
                                              motus_vec2_scale(acceleration, dt * dt * phi2)));
-    if (!motus_vec2_is_finite(velocity) || !motus_vec2_is_finite(position)) {
-        state = motus_particle_check(particle);
-        return state != MOTUS_OK ? state : MOTUS_ERROR_OVERFLOW;
-    }
-    particle->velocity = velocity;
-    particle->position = position;
-    return MOTUS_OK;
+    return motus__commit_step(particle, velocity, position);
 }
 
 /* =================================================================================================
