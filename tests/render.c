@@ -28,7 +28,7 @@
 /* How far the centroid of the drawn circle may sit from the centre it was drawn at. The canvas draws
    raylib's 36-gon with 4x4 samples per pixel; canvas_selftest measures the error over 1,000 random
    centres and phases (it measured 0.025 px at most for radius 5, 0.039 px over radii 2 to 12). The bound leaves room for
-   a rasteriser that rounds differently, and is still 40 times finer than the 1/60 s method error the
+   a rasteriser that rounds differently, and is still 8 times finer than the 1/60 s method error the
    tests check (0.42 px after one second of the WSAD push). */
 #define PIXEL_TOLERANCE 0.05
 
