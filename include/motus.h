@@ -64,6 +64,7 @@
 #define MOTUS_VERSION (MOTUS_VERSION_MAJOR * 10000 + MOTUS_VERSION_MINOR * 100 + MOTUS_VERSION_PATCH)
 
 #include <math.h>
+#include <stddef.h> /* size_t, NULL */
 #include <stdint.h> /* fixed-width integers for the bit-level finite check; no library code */
 #ifdef __cplusplus
 #include <string.h> /* memcpy, for the same check in C++ */
@@ -134,6 +135,10 @@ typedef enum motus_result {
     MOTUS_ERROR_INVALID_TIME_STEP, /* dt <= 0, NaN or infinite */
     MOTUS_ERROR_INVALID_DAMPING,   /* a damping factor outside [0, 1], or a drag rate < 0 */
     MOTUS_ERROR_OVERFLOW,          /* finite inputs, but the result would not be finite */
+    MOTUS_ERROR_INVALID_COUNT,     /* a particle count < 0, or more than the stepper was made for */
+    MOTUS_ERROR_INVALID_FORCES,    /* a force model field out of range (negative drag, spring index, ...) */
+    MOTUS_ERROR_SCRATCH_TOO_SMALL, /* the memory given to a stepper is smaller than it needs */
+    MOTUS_ERROR_UNSUPPORTED,       /* the method cannot handle this force model (see motus_method) */
     MOTUS_RESULT_COUNT
 } motus_result;
 
@@ -266,7 +271,8 @@ MOTUS_API motus_result motus_particle_step(motus_particle *particle, motus_real 
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (particle->inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
-    velocity = motus_vec2_add(particle->velocity, motus_vec2_scale(particle->force, particle->inverse_mass * dt));
+    /* (F * 1/m) * dt, in this order, as the stepper's semi-implicit Euler does: the two agree bit for bit. */
+    velocity = motus_vec2_add(particle->velocity, motus_vec2_scale(motus_vec2_scale(particle->force, particle->inverse_mass), dt));
     position = motus_vec2_add(particle->position, motus_vec2_scale(velocity, dt));
     return motus__commit_step(particle, velocity, position);
 }
@@ -353,6 +359,485 @@ MOTUS_API motus_result motus_particle_step_linear_drag(motus_particle *particle,
 }
 
 /* =================================================================================================
+   Forces: one model for every method
+   =================================================================================================
+   A method that takes several stages evaluates the forces again at each stage, so every term is a function
+   of the state (positions, velocities, time). Each term is off while its field is zero, so a zeroed
+   motus_forces is "no forces". The particle's accumulated `force` is added at every stage as a force held
+   constant over the step (a key held for the frame). Immovable particles (inverse mass 0) get no
+   acceleration from any term. */
+
+typedef struct motus_spring {
+    int a;                  /* index of one end */
+    int b;                  /* index of the other end, or -1: a spring from particle a to `anchor` */
+    motus_vec2 anchor;      /* the fixed end when b == -1 */
+    motus_real rest_length; /* m */
+    motus_real stiffness;   /* k, N/m: Hooke's F = -k*(|d| - rest_length)*d/|d| */
+    motus_real damping;     /* c, N*s/m, on the rate of stretch: F -= c*((v_a - v_b).d/|d|)*d/|d| */
+} motus_spring;
+
+/* Adds forces (newtons) to forces[0..count) for the state given; called at every stage of a step with the
+   stage's positions, velocities and time. It must not keep the pointers. */
+typedef void (*motus_force_callback)(void *user_data, int count, const motus_vec2 *positions,
+                                     const motus_vec2 *velocities, motus_real time, motus_vec2 *forces);
+
+typedef struct motus_forces {
+    motus_vec2 gravity;            /* uniform acceleration, m/s^2 (e.g. {0, 9.81} with y down) */
+    motus_real linear_drag;        /* k >= 0, 1/s: a -= k*v */
+    motus_real quadratic_drag;     /* c >= 0, 1/m: a -= c*|v|*v */
+    motus_real attractor_strength; /* mu = G*M >= 0, m^3/s^2: a -= mu*r/|r|^3, r from attractor_position */
+    motus_vec2 attractor_position;
+    const motus_spring *springs; /* spring_count springs, or NULL */
+    int spring_count;
+    motus_force_callback callback; /* or NULL */
+    void *user_data;               /* handed to callback */
+} motus_forces;
+
+/* MOTUS_OK if the model can be used with `count` particles: finite fields, non-negative drags, stiffness,
+   damping, rest lengths and attractor strength, spring ends in [0, count) (b may be -1). */
+MOTUS_API motus_result motus_forces_check(const motus_forces *forces, int count) {
+    int i;
+    if (!forces) return MOTUS_ERROR_NULL_POINTER;
+    if (!motus_vec2_is_finite(forces->gravity) || !motus_real_is_finite(forces->linear_drag) ||
+        !motus_real_is_finite(forces->quadratic_drag) || !motus_real_is_finite(forces->attractor_strength) ||
+        !motus_vec2_is_finite(forces->attractor_position))
+        return MOTUS_ERROR_NOT_FINITE;
+    if (forces->linear_drag < 0 || forces->quadratic_drag < 0 || forces->attractor_strength < 0 ||
+        forces->spring_count < 0 || (forces->spring_count > 0 && !forces->springs))
+        return MOTUS_ERROR_INVALID_FORCES;
+    for (i = 0; i < forces->spring_count; ++i) {
+        const motus_spring *s = &forces->springs[i];
+        if (!motus_vec2_is_finite(s->anchor) || !motus_real_is_finite(s->rest_length) ||
+            !motus_real_is_finite(s->stiffness) || !motus_real_is_finite(s->damping))
+            return MOTUS_ERROR_NOT_FINITE;
+        if (s->a < 0 || s->a >= count || s->b < -1 || s->b >= count || s->b == s->a || s->rest_length < 0 ||
+            s->stiffness < 0 || s->damping < 0)
+            return MOTUS_ERROR_INVALID_FORCES;
+    }
+    return MOTUS_OK;
+}
+
+/* Accelerations of every particle at the stage state (x, v, time). */
+MOTUS_API void motus__accelerations(const motus_forces *forces, const motus_particle *particles, int count,
+                                    const motus_vec2 *x, const motus_vec2 *v, motus_real time,
+                                    motus_vec2 *acceleration) {
+    int i;
+    /* Forces first (newtons), then divided by mass; accelerations after. */
+    for (i = 0; i < count; ++i) acceleration[i] = particles[i].force;
+    for (i = 0; i < forces->spring_count; ++i) {
+        const motus_spring *s = &forces->springs[i];
+        motus_vec2 other = s->b < 0 ? s->anchor : x[s->b];
+        motus_vec2 other_velocity = s->b < 0 ? motus_v2(0, 0) : v[s->b];
+        motus_vec2 d = motus_vec2_sub(x[s->a], other);
+        motus_real length = motus_vec2_length(d);
+        motus_vec2 f;
+        if (length > 0) {
+            motus_vec2 direction = motus_vec2_scale(d, MOTUS_R(1.0) / length);
+            motus_real stretch_rate = motus_vec2_dot(motus_vec2_sub(v[s->a], other_velocity), direction);
+            f = motus_vec2_scale(direction, -s->stiffness * (length - s->rest_length) - s->damping * stretch_rate);
+        } else {
+            f = motus_v2(0, 0); /* ends on top of each other: no direction to push along */
+        }
+        acceleration[s->a] = motus_vec2_add(acceleration[s->a], f);
+        if (s->b >= 0) acceleration[s->b] = motus_vec2_sub(acceleration[s->b], f);
+    }
+    if (forces->callback) forces->callback(forces->user_data, count, x, v, time, acceleration);
+    for (i = 0; i < count; ++i) {
+        motus_real inverse_mass = particles[i].inverse_mass;
+        motus_vec2 a;
+        if (inverse_mass == 0) {
+            acceleration[i] = motus_v2(0, 0);
+            continue;
+        }
+        a = motus_vec2_add(motus_vec2_scale(acceleration[i], inverse_mass), forces->gravity);
+        if (forces->linear_drag != 0) a = motus_vec2_sub(a, motus_vec2_scale(v[i], forces->linear_drag));
+        if (forces->quadratic_drag != 0)
+            a = motus_vec2_sub(a, motus_vec2_scale(v[i], forces->quadratic_drag * motus_vec2_length(v[i])));
+        if (forces->attractor_strength != 0) {
+            motus_vec2 r = motus_vec2_sub(x[i], forces->attractor_position);
+            motus_real r2 = motus_vec2_dot(r, r);
+            if (r2 > 0) a = motus_vec2_sub(a, motus_vec2_scale(r, forces->attractor_strength / (r2 * MOTUS_SQRT(r2))));
+        }
+        acceleration[i] = a;
+    }
+}
+
+/* =================================================================================================
+   Integrators
+   =================================================================================================
+   All methods step a whole array of particles under one motus_forces through a motus_stepper, which owns
+   nothing: the caller gives it memory (motus_stepper_scratch_size) once, and a step allocates nothing.
+   A step is all or nothing: it computes the new state in that memory and writes it back only if every
+   value is finite.
+
+   h is the step, a(x, v, t) the acceleration the force model gives. "Evaluations" counts calls of the force
+   model per step. Stability limits are for an undamped spring x'' = -w^2 x (w = sqrt(k/m)).
+
+   method                 order  evals  symplectic  stable while   stores            velocity-dependent forces
+   SEMI_IMPLICIT_EULER      1      1       yes      w*h < 2        -                 a(x_n, v_n)
+     v += a(x, v)*h; x += v*h (new v). The textbook step and the default (method 0).
+   EXPLICIT_EULER           1      1       no       never (*)      -                 a(x_n, v_n)
+     x += v*h (old v); v += a*h. Energy grows every step: (*) the amplitude grows by sqrt(1 + (w*h)^2).
+   POSITION_VERLET          2      1       yes      w*h < 2        previous x        (x_n - x_{n-1})/h: 1st order
+     Stormer: x_{n+1} = 2x_n - x_{n-1} + a_n*h^2. Keeps the previous positions in the stepper: if the game
+     moves particles or changes velocities by hand, call motus_stepper_reset. The first step after a
+     reset starts from the particle's velocity (x_1 = x_0 + v_0*h + a_0*h^2/2). Reports
+     v_{n+1} = (x_{n+1} - x_n)/h + a_n*h/2. Forces that depend on velocity see (x_n - x_{n-1})/h, a
+     first-order velocity, so with drag the method is first order.
+   VELOCITY_VERLET          2      2 (1)   yes      w*h < 2        -                 predicted v + a*h
+     x += v*h + a*h^2/2; v += (a + a(x_new, v + a*h))*h/2.
+   LEAPFROG                 2      2 (1)   yes      w*h < 2        -                 predicted v + a*h
+     Kick-drift-kick: v += a*h/2; x += v*h; v += a(x_new)*h/2. The same map as velocity Verlet in exact
+     arithmetic (it is velocity Verlet written with the half-step velocity); the two differ only in
+     rounding. Time-reversible: a step with -h undoes a step with h.
+   MIDPOINT                 2      2       no       never (**)     -                 at the stage
+     Explicit midpoint RK2: y_mid = y + f(y)*h/2; y += f(y_mid)*h. (**) Like explicit Euler it adds
+     energy to a spring every step, only less: the amplitude grows by sqrt(1 + (w*h)^4/4) per step.
+   RK4                      4      4       no       w*h < 2.83     -                 at each stage
+     Classic Runge-Kutta, stable while w*h < 2*sqrt(2). Energy drifts (a spring's decays) by O(h^4)
+     per unit time, so it is not bounded over long runs.
+   FOREST_RUTH              4      3       yes      w*h < 1.57     -                 v at each kick: 1st order
+     Forest-Ruth (Yoshida's 4th-order triple jump of leapfrog), theta = 1/(2 - 2^(1/3)):
+     drift theta*h/2, kick theta*h, drift (1-theta)*h/2, kick (1-2*theta)*h, drift (1-theta)*h/2,
+     kick theta*h, drift theta*h/2. Symplectic and 4th order for forces of position only; a kick with a
+     velocity-dependent force is an explicit Euler step in v, which makes the whole method first order
+     (use RK4 or the exact stepper for drag). Its large negative middle step is why its stability
+     limit (1.57) is lower than leapfrog's.
+   EXACT_LINEAR_DRAG        exact  0       -        always         -                 exact (linear drag)
+     Solves v' = g + F/m - k*v over the step (see motus_particle_step_linear_drag). Only for gravity,
+     linear drag and the accumulated force; other terms give MOTUS_ERROR_UNSUPPORTED.
+
+   (1): with MOTUS_STEPPER_REUSE_FORCES, the acceleration computed at the end of a step is reused at the
+   start of the next ("first same as last"). Only valid if nothing but the stepper changes positions,
+   velocities and forces between steps and the forces do not depend on velocity; a game that adds input
+   forces each frame should leave it off. */
+
+typedef enum motus_method {
+    MOTUS_SEMI_IMPLICIT_EULER = 0,
+    MOTUS_EXPLICIT_EULER,
+    MOTUS_POSITION_VERLET,
+    MOTUS_VELOCITY_VERLET,
+    MOTUS_LEAPFROG,
+    MOTUS_MIDPOINT,
+    MOTUS_RK4,
+    MOTUS_FOREST_RUTH,
+    MOTUS_EXACT_LINEAR_DRAG,
+    MOTUS_METHOD_COUNT
+} motus_method;
+
+enum {
+    MOTUS_STEPPER_REUSE_FORCES = 1 /* see (1) above */
+};
+
+typedef struct motus_stepper_desc {
+    motus_method method; /* 0: semi-implicit Euler */
+    int capacity;        /* most particles a step will be given */
+    void *scratch;       /* motus_stepper_scratch_size(method, capacity) bytes, aligned for motus_real */
+    size_t scratch_bytes;
+    unsigned flags; /* MOTUS_STEPPER_* */
+} motus_stepper_desc;
+
+typedef struct motus_stepper {
+    motus_method method;
+    int capacity;
+    unsigned flags;
+    motus_vec2 *scratch;
+    motus_real time;          /* seconds stepped since init or reset: the callback's time */
+    int has_history;          /* POSITION_VERLET: scratch holds x_{n-1} */
+    int has_last_acceleration; /* REUSE_FORCES: scratch holds a(x_n, v_n) */
+} motus_stepper;
+
+/* Names, for tables and plots: "semi_implicit_euler", "rk4", ... NULL for a value out of range. */
+MOTUS_API const char *motus_method_name(motus_method method) {
+    switch (method) {
+    case MOTUS_SEMI_IMPLICIT_EULER: return "semi_implicit_euler";
+    case MOTUS_EXPLICIT_EULER: return "explicit_euler";
+    case MOTUS_POSITION_VERLET: return "position_verlet";
+    case MOTUS_VELOCITY_VERLET: return "velocity_verlet";
+    case MOTUS_LEAPFROG: return "leapfrog";
+    case MOTUS_MIDPOINT: return "midpoint";
+    case MOTUS_RK4: return "rk4";
+    case MOTUS_FOREST_RUTH: return "forest_ruth";
+    case MOTUS_EXACT_LINEAR_DRAG: return "exact_linear_drag";
+    case MOTUS_METHOD_COUNT: break;
+    }
+    return NULL;
+}
+
+/* Order of accuracy (0 for the exact stepper) and force evaluations per step, as tabled above. */
+MOTUS_API int motus_method_order(motus_method method) {
+    static const int order[MOTUS_METHOD_COUNT] = {1, 1, 2, 2, 2, 2, 4, 4, 0};
+    return (unsigned)method < MOTUS_METHOD_COUNT ? order[method] : -1;
+}
+MOTUS_API int motus_method_evaluations(motus_method method, unsigned flags) {
+    static const int evaluations[MOTUS_METHOD_COUNT] = {1, 1, 1, 2, 2, 2, 4, 3, 0};
+    if ((unsigned)method >= MOTUS_METHOD_COUNT) return -1;
+    if ((flags & MOTUS_STEPPER_REUSE_FORCES) && (method == MOTUS_VELOCITY_VERLET || method == MOTUS_LEAPFROG))
+        return 1;
+    return evaluations[method];
+}
+
+/* Scratch arrays per particle: [0] new x, [1] new v, [2] acceleration, then per method: RK stages, the
+   previous positions (position Verlet) or the acceleration kept for the next step (reuse). */
+MOTUS_API int motus__scratch_arrays(motus_method method) {
+    switch (method) {
+    case MOTUS_POSITION_VERLET: return 4;
+    case MOTUS_VELOCITY_VERLET:
+    case MOTUS_LEAPFROG: return 5;
+    case MOTUS_MIDPOINT: return 5;
+    case MOTUS_RK4: return 7;
+    default: return 3;
+    }
+}
+
+/* Bytes of memory a stepper for `capacity` particles needs; 0 for bad arguments. */
+MOTUS_API size_t motus_stepper_scratch_size(motus_method method, int capacity) {
+    if ((unsigned)method >= MOTUS_METHOD_COUNT || capacity < 0) return 0;
+    if ((size_t)capacity > ((size_t)-1) / (sizeof(motus_vec2) * 8)) return 0; /* absurd sizes overflow */
+    return (size_t)motus__scratch_arrays(method) * (size_t)capacity * sizeof(motus_vec2);
+}
+
+MOTUS_API motus_result motus_stepper_init(motus_stepper *stepper, const motus_stepper_desc *desc) {
+    size_t needed;
+    if (!stepper || !desc) return MOTUS_ERROR_NULL_POINTER;
+    if ((unsigned)desc->method >= MOTUS_METHOD_COUNT) return MOTUS_ERROR_UNSUPPORTED;
+    if (desc->capacity < 0) return MOTUS_ERROR_INVALID_COUNT;
+    needed = motus_stepper_scratch_size(desc->method, desc->capacity);
+    if (needed == 0 && desc->capacity > 0) return MOTUS_ERROR_INVALID_COUNT;
+    if (desc->scratch_bytes < needed) return MOTUS_ERROR_SCRATCH_TOO_SMALL;
+    if (!desc->scratch && needed > 0) return MOTUS_ERROR_NULL_POINTER;
+    stepper->method = desc->method;
+    stepper->capacity = desc->capacity;
+    stepper->flags = desc->flags;
+    stepper->scratch = (motus_vec2 *)desc->scratch;
+    stepper->time = 0;
+    stepper->has_history = 0;
+    stepper->has_last_acceleration = 0;
+    return MOTUS_OK;
+}
+
+/* Forget what the stepper remembers between steps (position Verlet's previous positions, a reused
+   acceleration). Call it after moving particles or changing their velocities by hand. */
+MOTUS_API void motus_stepper_reset(motus_stepper *stepper) {
+    if (!stepper) return;
+    stepper->has_history = 0;
+    stepper->has_last_acceleration = 0;
+}
+
+/* y_out = y + a*s, for the position and velocity halves of a stage. */
+MOTUS_API void motus__axpy(int count, const motus_vec2 *y, const motus_vec2 *a, motus_real s, motus_vec2 *out) {
+    int i;
+    for (i = 0; i < count; ++i) out[i] = motus_vec2_add(y[i], motus_vec2_scale(a[i], s));
+}
+
+/* Copies particle positions (velocities) into an array, the state a stage starts from. */
+MOTUS_API void motus__gather(const motus_particle *particles, int count, motus_vec2 *positions,
+                             motus_vec2 *velocities) {
+    int i;
+    for (i = 0; i < count; ++i) {
+        if (positions) positions[i] = particles[i].position;
+        if (velocities) velocities[i] = particles[i].velocity;
+    }
+}
+
+MOTUS_API motus_result motus__step_exact_drag(const motus_forces *forces, const motus_particle *particles,
+                                              int count, motus_real h, motus_vec2 *x, motus_vec2 *v) {
+    motus_real phi1, phi2, decay;
+    int i;
+    if (forces->quadratic_drag != 0 || forces->attractor_strength != 0 || forces->spring_count != 0 ||
+        forces->callback)
+        return MOTUS_ERROR_UNSUPPORTED;
+    motus__drag_phi(forces->linear_drag * h, &phi1, &phi2);
+    decay = MOTUS_EXP(-forces->linear_drag * h);
+    for (i = 0; i < count; ++i) {
+        const motus_particle *p = &particles[i];
+        motus_vec2 a;
+        if (p->inverse_mass == 0) {
+            x[i] = p->position;
+            v[i] = p->velocity;
+            continue;
+        }
+        a = motus_vec2_add(motus_vec2_scale(p->force, p->inverse_mass), forces->gravity);
+        v[i] = motus_vec2_add(motus_vec2_scale(p->velocity, decay), motus_vec2_scale(a, h * phi1));
+        x[i] = motus_vec2_add(p->position, motus_vec2_add(motus_vec2_scale(p->velocity, h * phi1),
+                                                          motus_vec2_scale(a, h * h * phi2)));
+    }
+    return MOTUS_OK;
+}
+
+/* Advances particles[0..count) by dt under `forces` (NULL: no forces but the accumulated ones) with the
+   stepper's method. On any result but MOTUS_OK nothing is written: not the particles, not the stepper. */
+MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle *particles, int count,
+                                          const motus_forces *forces, motus_real dt) {
+    static const motus_forces no_forces = {{0, 0}, 0, 0, 0, {0, 0}, NULL, 0, NULL, NULL};
+    motus_vec2 *x, *v, *a;
+    const motus_real h = dt, t = stepper ? stepper->time : 0;
+    motus_result result;
+    int i, reuse;
+    if (!stepper || (!particles && count > 0)) return MOTUS_ERROR_NULL_POINTER;
+    if (count < 0 || count > stepper->capacity) return MOTUS_ERROR_INVALID_COUNT;
+    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    if (!forces) forces = &no_forces;
+    result = motus_forces_check(forces, count);
+    if (result != MOTUS_OK) return result;
+    for (i = 0; i < count; ++i) /* a negative inverse mass is finite, so the output check would miss it */
+        if (particles[i].inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
+
+    x = stepper->scratch;
+    v = x + stepper->capacity;
+    a = v + stepper->capacity;
+    reuse = (stepper->flags & MOTUS_STEPPER_REUSE_FORCES) && stepper->has_last_acceleration;
+
+    switch (stepper->method) {
+    case MOTUS_SEMI_IMPLICIT_EULER:
+    case MOTUS_EXPLICIT_EULER:
+        motus__gather(particles, count, x, v);
+        motus__accelerations(forces, particles, count, x, v, t, a);
+        for (i = 0; i < count; ++i) {
+            motus_vec2 old_velocity = v[i];
+            v[i] = motus_vec2_add(v[i], motus_vec2_scale(a[i], h));
+            x[i] = motus_vec2_add(x[i], motus_vec2_scale(stepper->method == MOTUS_EXPLICIT_EULER ? old_velocity : v[i], h));
+        }
+        break;
+    case MOTUS_POSITION_VERLET: {
+        motus_vec2 *previous = a + stepper->capacity;
+        motus__gather(particles, count, x, v);
+        if (stepper->has_history) /* the velocity forces see: (x_n - x_{n-1})/h */
+            for (i = 0; i < count; ++i) v[i] = motus_vec2_scale(motus_vec2_sub(x[i], previous[i]), MOTUS_R(1.0) / h);
+        motus__accelerations(forces, particles, count, x, v, t, a);
+        for (i = 0; i < count; ++i) {
+            motus_vec2 x_now = x[i], step_a = motus_vec2_scale(a[i], h * h);
+            motus_vec2 drift = stepper->has_history ? motus_vec2_sub(x_now, previous[i])
+                                                    : motus_vec2_add(motus_vec2_scale(particles[i].velocity, h),
+                                                                     motus_vec2_scale(step_a, MOTUS_R(-0.5)));
+            x[i] = motus_vec2_add(motus_vec2_add(x_now, drift), step_a);
+            v[i] = motus_vec2_add(motus_vec2_scale(motus_vec2_sub(x[i], x_now), MOTUS_R(1.0) / h),
+                                  motus_vec2_scale(a[i], MOTUS_R(0.5) * h));
+        }
+        break;
+    }
+    case MOTUS_VELOCITY_VERLET:
+    case MOTUS_LEAPFROG: {
+        motus_vec2 *kept = a + stepper->capacity; /* a(x_n, v_n) from the last step, or computed now */
+        motus_vec2 *predicted = kept + stepper->capacity; /* v_n + a_n*h, the velocity the end forces see */
+        motus__gather(particles, count, x, v);
+        if (!reuse) motus__accelerations(forces, particles, count, x, v, t, kept);
+        if (stepper->method == MOTUS_VELOCITY_VERLET) {
+            for (i = 0; i < count; ++i) {
+                x[i] = motus_vec2_add(x[i], motus_vec2_add(motus_vec2_scale(v[i], h),
+                                                           motus_vec2_scale(kept[i], MOTUS_R(0.5) * h * h)));
+                predicted[i] = motus_vec2_add(v[i], motus_vec2_scale(kept[i], h));
+            }
+            motus__accelerations(forces, particles, count, x, predicted, t + h, a);
+            for (i = 0; i < count; ++i) {
+                v[i] = motus_vec2_add(v[i], motus_vec2_scale(motus_vec2_add(kept[i], a[i]), MOTUS_R(0.5) * h));
+                kept[i] = a[i];
+            }
+        } else {
+            for (i = 0; i < count; ++i) {
+                motus_vec2 half = motus_vec2_add(v[i], motus_vec2_scale(kept[i], MOTUS_R(0.5) * h));
+                x[i] = motus_vec2_add(x[i], motus_vec2_scale(half, h));
+                v[i] = half;
+                predicted[i] = motus_vec2_add(half, motus_vec2_scale(kept[i], MOTUS_R(0.5) * h));
+            }
+            motus__accelerations(forces, particles, count, x, predicted, t + h, a);
+            for (i = 0; i < count; ++i) {
+                v[i] = motus_vec2_add(v[i], motus_vec2_scale(a[i], MOTUS_R(0.5) * h));
+                kept[i] = a[i];
+            }
+        }
+        break;
+    }
+    case MOTUS_MIDPOINT: {
+        motus_vec2 *x_mid = a + stepper->capacity, *v_mid = x_mid + stepper->capacity;
+        motus__gather(particles, count, x, v);
+        motus__accelerations(forces, particles, count, x, v, t, a);
+        motus__axpy(count, x, v, MOTUS_R(0.5) * h, x_mid);
+        motus__axpy(count, v, a, MOTUS_R(0.5) * h, v_mid);
+        motus__accelerations(forces, particles, count, x_mid, v_mid, t + MOTUS_R(0.5) * h, a);
+        motus__axpy(count, x, v_mid, h, x);
+        motus__axpy(count, v, a, h, v);
+        break;
+    }
+    case MOTUS_RK4: {
+        /* k1..k4 summed into dx, dv with weights 1, 2, 2, 1; the stage state in xs, vs. */
+        motus_vec2 *xs = a + stepper->capacity, *vs = xs + stepper->capacity;
+        motus_vec2 *dx = vs + stepper->capacity, *dv = dx + stepper->capacity;
+        static const motus_real stage_c[3] = {MOTUS_R(0.5), MOTUS_R(0.5), MOTUS_R(1.0)};
+        static const motus_real weight[3] = {MOTUS_R(2.0), MOTUS_R(2.0), MOTUS_R(1.0)};
+        int stage;
+        motus__gather(particles, count, x, v);
+        motus__accelerations(forces, particles, count, x, v, t, a);
+        for (i = 0; i < count; ++i) {
+            dx[i] = v[i];
+            dv[i] = a[i];
+            vs[i] = v[i];
+        }
+        for (stage = 0; stage < 3; ++stage) {
+            motus_real c = stage_c[stage] * h;
+            for (i = 0; i < count; ++i) {
+                motus_vec2 k_x = vs[i]; /* the previous stage's velocity is this stage's dx/dt slope */
+                xs[i] = motus_vec2_add(x[i], motus_vec2_scale(k_x, c));
+                vs[i] = motus_vec2_add(v[i], motus_vec2_scale(a[i], c));
+            }
+            motus__accelerations(forces, particles, count, xs, vs, t + c, a);
+            for (i = 0; i < count; ++i) {
+                dx[i] = motus_vec2_add(dx[i], motus_vec2_scale(vs[i], weight[stage]));
+                dv[i] = motus_vec2_add(dv[i], motus_vec2_scale(a[i], weight[stage]));
+            }
+        }
+        motus__axpy(count, x, dx, h / MOTUS_R(6.0), x);
+        motus__axpy(count, v, dv, h / MOTUS_R(6.0), v);
+        break;
+    }
+    case MOTUS_FOREST_RUTH: {
+        /* theta = 1/(2 - 2^(1/3)) */
+        const motus_real theta = (motus_real)1.3512071919596576340476878089715;
+        const motus_real drift[4] = {theta * MOTUS_R(0.5), (1 - theta) * MOTUS_R(0.5), (1 - theta) * MOTUS_R(0.5),
+                                     theta * MOTUS_R(0.5)};
+        const motus_real kick[3] = {theta, 1 - 2 * theta, theta};
+        motus_real stage_time = t;
+        int stage;
+        motus__gather(particles, count, x, v);
+        for (stage = 0; stage < 3; ++stage) {
+            motus__axpy(count, x, v, drift[stage] * h, x);
+            stage_time += drift[stage] * h;
+            motus__accelerations(forces, particles, count, x, v, stage_time, a);
+            motus__axpy(count, v, a, kick[stage] * h, v);
+        }
+        motus__axpy(count, x, v, drift[3] * h, x);
+        break;
+    }
+    case MOTUS_EXACT_LINEAR_DRAG:
+        result = motus__step_exact_drag(forces, particles, count, h, x, v);
+        if (result != MOTUS_OK) return result;
+        break;
+    default: return MOTUS_ERROR_UNSUPPORTED;
+    }
+
+    /* All or nothing: find the first particle whose new state is not finite. */
+    for (i = 0; i < count; ++i) {
+        if (!motus_vec2_is_finite(x[i]) || !motus_vec2_is_finite(v[i])) {
+            result = motus_particle_check(&particles[i]);
+            return result != MOTUS_OK ? result : MOTUS_ERROR_OVERFLOW;
+        }
+    }
+    if (stepper->method == MOTUS_POSITION_VERLET) {
+        motus_vec2 *previous = a + stepper->capacity;
+        for (i = 0; i < count; ++i) previous[i] = particles[i].position;
+        stepper->has_history = 1;
+    }
+    if (stepper->method == MOTUS_VELOCITY_VERLET || stepper->method == MOTUS_LEAPFROG)
+        stepper->has_last_acceleration = 1;
+    for (i = 0; i < count; ++i) {
+        particles[i].position = x[i];
+        particles[i].velocity = v[i];
+    }
+    stepper->time += dt;
+    return MOTUS_OK;
+}
+
+/* =================================================================================================
    Validation and messages
    ================================================================================================= */
 MOTUS_API const char *motus_result_string(motus_result result) {
@@ -364,6 +849,12 @@ MOTUS_API const char *motus_result_string(motus_result result) {
     case MOTUS_ERROR_INVALID_TIME_STEP: return "time step must be finite and > 0 seconds";
     case MOTUS_ERROR_INVALID_DAMPING: return "damping factor must be in [0, 1] and drag rate >= 0";
     case MOTUS_ERROR_OVERFLOW: return "the result would overflow to infinity; state left unchanged";
+    case MOTUS_ERROR_INVALID_COUNT: return "particle count must be >= 0 and at most the stepper's capacity";
+    case MOTUS_ERROR_INVALID_FORCES:
+        return "force model out of range: drags and attractor strength >= 0, spring indices valid, all finite";
+    case MOTUS_ERROR_SCRATCH_TOO_SMALL: return "stepper memory too small: see motus_stepper_scratch_size()";
+    case MOTUS_ERROR_UNSUPPORTED:
+        return "this method cannot integrate these forces (the exact stepper takes gravity and linear drag only)";
     case MOTUS_RESULT_COUNT: break;
     }
     return "unknown motus_result value";
