@@ -55,7 +55,7 @@ enum {
 #define PROBLEM_QUADRATIC_DRAG 0.05
 #define PROBLEM_ECCENTRICITY 0.5
 
-static problem_state problem_free_fall_exact(double t) {
+static inline problem_state problem_free_fall_exact(double t) {
     problem_state s;
     s.x = 3 * t;
     s.y = 12 * t - 0.5 * PROBLEM_G * t * t;
@@ -63,10 +63,10 @@ static problem_state problem_free_fall_exact(double t) {
     s.vy = 12 - PROBLEM_G * t;
     return s;
 }
-static double problem_gravity_energy(problem_state s) { return 0.5 * (s.vx * s.vx + s.vy * s.vy) + PROBLEM_G * s.y; }
+static inline double problem_gravity_energy(problem_state s) { return 0.5 * (s.vx * s.vx + s.vy * s.vy) + PROBLEM_G * s.y; }
 
 /* v' = g - k v per axis: v = v_inf + (v0 - v_inf) e^-kt, x = v_inf t + (v0 - v_inf)(1 - e^-kt)/k. */
-static problem_state problem_linear_drag_exact(double t) {
+static inline problem_state problem_linear_drag_exact(double t) {
     const double k = PROBLEM_DRAG, decay = exp(-k * t), vx_inf = 0, vy_inf = -PROBLEM_G / k;
     problem_state s;
     s.x = vx_inf * t + (3 - vx_inf) * (1 - decay) / k;
@@ -77,7 +77,7 @@ static problem_state problem_linear_drag_exact(double t) {
 }
 
 /* Isotropic oscillator from (1, 0) with velocity (0, 1): an ellipse with semi-axes 1 and 1/2. */
-static problem_state problem_oscillator_exact(double t) {
+static inline problem_state problem_oscillator_exact(double t) {
     const double w = PROBLEM_OMEGA;
     problem_state s;
     s.x = cos(w * t);
@@ -86,12 +86,12 @@ static problem_state problem_oscillator_exact(double t) {
     s.vy = cos(w * t);
     return s;
 }
-static double problem_oscillator_energy(problem_state s) {
+static inline double problem_oscillator_energy(problem_state s) {
     return 0.5 * (s.vx * s.vx + s.vy * s.vy) + 0.5 * PROBLEM_OMEGA * PROBLEM_OMEGA * (s.x * s.x + s.y * s.y);
 }
 
 /* x'' + 2 zeta w x' + w^2 x = 0 per axis, with 2 zeta w = 0.4: x = e^(-gt)(A cos(wd t) + B sin(wd t)). */
-static problem_state problem_damped_oscillator_exact(double t) {
+static inline problem_state problem_damped_oscillator_exact(double t) {
     const double w = PROBLEM_OMEGA, g = 0.5 * PROBLEM_OSCILLATOR_DRAG, wd = sqrt(w * w - g * g), e = exp(-g * t);
     const double c = cos(wd * t), sn = sin(wd * t);
     /* x: x0 = 1, v0 = 0 -> A = 1, B = g/wd. y: y0 = 0, v0 = 1 -> A = 0, B = 1/wd. */
@@ -103,7 +103,7 @@ static problem_state problem_damped_oscillator_exact(double t) {
     return s;
 }
 
-static problem_state problem_kepler_circular_exact(double t) {
+static inline problem_state problem_kepler_circular_exact(double t) {
     problem_state s;
     s.x = cos(t);
     s.y = sin(t);
@@ -111,15 +111,15 @@ static problem_state problem_kepler_circular_exact(double t) {
     s.vy = cos(t);
     return s;
 }
-static double problem_kepler_energy(problem_state s) {
+static inline double problem_kepler_energy(problem_state s) {
     return 0.5 * (s.vx * s.vx + s.vy * s.vy) - 1.0 / sqrt(s.x * s.x + s.y * s.y);
 }
 /* Angular momentum per unit mass, conserved by the central force. */
-static double problem_angular_momentum(problem_state s) { return s.x * s.vy - s.y * s.vx; }
+static inline double problem_angular_momentum(problem_state s) { return s.x * s.vy - s.y * s.vx; }
 
 /* Ellipse a = 1, e = 0.5, starting at periapsis (0.5, 0) moving +y: mean anomaly M = t, Kepler's equation
    E - e sin E = M solved by Newton's method to rounding. */
-static problem_state problem_kepler_eccentric_exact(double t) {
+static inline problem_state problem_kepler_eccentric_exact(double t) {
     const double e = PROBLEM_ECCENTRICITY, b = sqrt(1 - e * e);
     double m = fmod(t, 2 * PROBLEM_PI), E = m, r;
     int i;
@@ -138,7 +138,7 @@ static problem_state problem_kepler_eccentric_exact(double t) {
 }
 
 /* Fills *p with problem `which` (PROBLEM_*). Returns 0 for an unknown index. */
-static int problem_get(int which, problem *p) {
+static inline int problem_get(int which, problem *p) {
     memset(p, 0, sizeof *p);
     switch (which) {
     case PROBLEM_FREE_FALL:
@@ -205,14 +205,14 @@ static int problem_get(int which, problem *p) {
 }
 
 /* A particle of mass 1 at the problem's start. */
-static motus_particle problem_particle(const problem *p) {
+static inline motus_particle problem_particle(const problem *p) {
     motus_particle particle;
     motus_particle_init(&particle, motus_v2((motus_real)p->start.x, (motus_real)p->start.y), 1);
     particle.velocity = motus_v2((motus_real)p->start.vx, (motus_real)p->start.vy);
     return particle;
 }
 
-static problem_state problem_state_of(const motus_particle *particle) {
+static inline problem_state problem_state_of(const motus_particle *particle) {
     problem_state s;
     s.x = particle->position.x, s.y = particle->position.y;
     s.vx = particle->velocity.x, s.vy = particle->velocity.y;

@@ -529,9 +529,10 @@ enum {
     MOTUS_STEPPER_REUSE_FORCES = 1 /* see (1) above */
 };
 
+/* Zero means default, and the first field is an int so that `= {0}` also compiles as C++. */
 typedef struct motus_stepper_desc {
-    motus_method method; /* 0: semi-implicit Euler */
     int capacity;        /* most particles a step will be given */
+    motus_method method; /* 0: semi-implicit Euler */
     void *scratch;       /* motus_stepper_scratch_size(method, capacity) bytes, aligned for motus_real */
     size_t scratch_bytes;
     unsigned flags; /* MOTUS_STEPPER_* */
