@@ -529,7 +529,7 @@ enum {
     MOTUS_STEPPER_REUSE_FORCES = 1 /* see (1) above */
 };
 
-/* Zero means default, and the first field is an int so that `= {0}` also compiles as C++. */
+/* Zero means default: `motus_stepper_desc desc = {0};` in C, `= {}` in C++, then set what you need. */
 typedef struct motus_stepper_desc {
     int capacity;        /* most particles a step will be given */
     motus_method method; /* 0: semi-implicit Euler */
