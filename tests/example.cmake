@@ -16,6 +16,17 @@ foreach(key w a s d)
             "${CMAKE_CURRENT_BINARY_DIR}/example")
   set_tests_properties(example.wsad_key_${key} PROPERTIES LABELS example RESOURCE_LOCK x_server TIMEOUT 120)
 endforeach()
+# The orbits example: a headless run of 600 frames checked on its printed errors and on its screenshot's
+# colours (tests/example_orbits.sh decodes the PNG with python3, so it needs no stb), and two real keys.
+if(TARGET orbits)
+  foreach(mode headless key_space key_up)
+    add_test(NAME example.orbits_${mode}
+      COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/example_orbits.sh" $<TARGET_FILE:orbits> ${mode}
+              "${CMAKE_CURRENT_BINARY_DIR}/example")
+    set_tests_properties(example.orbits_${mode} PROPERTIES LABELS example RESOURCE_LOCK x_server TIMEOUT 120)
+  endforeach()
+endif()
+
 # The headless run the demo makes: a fixed number of frames, scripted input, a screenshot, checked on pixels.
 find_path(MOTUS_STB_INCLUDE_DIR stb/stb_image.h)
 if(NOT MOTUS_STB_INCLUDE_DIR)
