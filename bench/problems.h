@@ -67,10 +67,10 @@ static inline double problem_gravity_energy(problem_state s) { return 0.5 * (s.v
 
 /* v' = g - k v per axis: v = v_inf + (v0 - v_inf) e^-kt, x = v_inf t + (v0 - v_inf)(1 - e^-kt)/k. */
 static inline problem_state problem_linear_drag_exact(double t) {
-    const double k = PROBLEM_DRAG, decay = exp(-k * t), vx_inf = 0, vy_inf = -PROBLEM_G / k;
+    const double k = PROBLEM_DRAG, decay = exp(-k * t), lost = -expm1(-k * t), vx_inf = 0, vy_inf = -PROBLEM_G / k;
     problem_state s;
-    s.x = vx_inf * t + (3 - vx_inf) * (1 - decay) / k;
-    s.y = vy_inf * t + (12 - vy_inf) * (1 - decay) / k;
+    s.x = vx_inf * t + (3 - vx_inf) * lost / k;
+    s.y = vy_inf * t + (12 - vy_inf) * lost / k;
     s.vx = vx_inf + (3 - vx_inf) * decay;
     s.vy = vy_inf + (12 - vy_inf) * decay;
     return s;

@@ -479,9 +479,13 @@ MOTUS_API void motus__accelerations(const motus_forces *forces, const motus_part
    EXPLICIT_EULER           1      1       no       never (*)      -                 a(x_n, v_n)
      x += v*h (old v); v += a*h. Energy grows every step: (*) the amplitude grows by sqrt(1 + (w*h)^2).
    POSITION_VERLET          2      1       yes      w*h < 2        previous x        (x_n - x_{n-1})/h: 1st order
-     Stormer: x_{n+1} = 2x_n - x_{n-1} + a_n*h^2. Keeps the previous positions in the stepper: if the game
-     moves particles or changes velocities by hand, call motus_stepper_reset. The first step after a
-     reset starts from the particle's velocity (x_1 = x_0 + v_0*h + a_0*h^2/2). Reports
+     Stormer: x_{n+1} = 2x_n - x_{n-1} + a_n*h^2, in the time-corrected form for a step h after a step
+     h_p: x_{n+1} = x_n + (x_n - x_{n-1})*h/h_p + a_n*h*(h + h_p)/2, so a varying dt stays second order.
+     The stepper keeps each particle's last displacement x_n - x_{n-1} as it was added (re-forming it
+     from two positions would add a rounding error per step that grows with the run). If the game
+     moves particles or changes velocities by hand, call motus_stepper_reset. A particle without a
+     last displacement (after a reset, or new at the end of the array) starts from its velocity:
+     x_1 = x_0 + v_0*h + a_0*h^2/2. Reports
      v_{n+1} = (x_{n+1} - x_n)/h + a_n*h/2. Forces that depend on velocity see (x_n - x_{n-1})/h, a
      first-order velocity, so with drag the method is first order.
    VELOCITY_VERLET          2      2 (1)   yes      w*h < 2        -                 predicted v + a*h
@@ -489,7 +493,8 @@ MOTUS_API void motus__accelerations(const motus_forces *forces, const motus_part
    LEAPFROG                 2      2 (1)   yes      w*h < 2        -                 predicted v + a*h
      Kick-drift-kick: v += a*h/2; x += v*h; v += a(x_new)*h/2. The same map as velocity Verlet in exact
      arithmetic (it is velocity Verlet written with the half-step velocity); the two differ only in
-     rounding. Time-reversible: a step with -h undoes a step with h.
+     rounding. Time-reversible: flip the velocities, step as many times again, flip them back, and the
+     particles are where they started (up to rounding).
    MIDPOINT                 2      2       no       never (**)     -                 at the stage
      Explicit midpoint RK2: y_mid = y + f(y)*h/2; y += f(y_mid)*h. (**) Like explicit Euler it adds
      energy to a spring every step, only less: the amplitude grows by sqrt(1 + (w*h)^4/4) per step.
@@ -543,8 +548,9 @@ typedef struct motus_stepper {
     int capacity;
     unsigned flags;
     motus_vec2 *scratch;
-    motus_real time;          /* seconds stepped since init or reset: the callback's time */
-    int has_history;          /* POSITION_VERLET: scratch holds x_{n-1} */
+    motus_real time;           /* seconds stepped since init: the callback's time */
+    int history_count;         /* POSITION_VERLET: particles [0, history_count) have a last displacement */
+    motus_real previous_dt;    /* POSITION_VERLET: the step that displacement was made with */
     int has_last_acceleration; /* REUSE_FORCES: scratch holds a(x_n, v_n) */
 } motus_stepper;
 
@@ -612,7 +618,8 @@ MOTUS_API motus_result motus_stepper_init(motus_stepper *stepper, const motus_st
     stepper->flags = desc->flags;
     stepper->scratch = (motus_vec2 *)desc->scratch;
     stepper->time = 0;
-    stepper->has_history = 0;
+    stepper->history_count = 0;
+    stepper->previous_dt = 0;
     stepper->has_last_acceleration = 0;
     return MOTUS_OK;
 }
@@ -621,7 +628,7 @@ MOTUS_API motus_result motus_stepper_init(motus_stepper *stepper, const motus_st
    acceleration). Call it after moving particles or changing their velocities by hand. */
 MOTUS_API void motus_stepper_reset(motus_stepper *stepper) {
     if (!stepper) return;
-    stepper->has_history = 0;
+    stepper->history_count = 0;
     stepper->has_last_acceleration = 0;
 }
 
@@ -653,9 +660,9 @@ MOTUS_API motus_result motus__step_exact_drag(const motus_forces *forces, const 
     for (i = 0; i < count; ++i) {
         const motus_particle *p = &particles[i];
         motus_vec2 a;
-        if (p->inverse_mass == 0) {
-            x[i] = p->position;
+        if (p->inverse_mass == 0) { /* nothing acts on it, drag included: it keeps its velocity */
             v[i] = p->velocity;
+            x[i] = motus_vec2_add(p->position, motus_vec2_scale(p->velocity, h));
             continue;
         }
         a = motus_vec2_add(motus_vec2_scale(p->force, p->inverse_mass), forces->gravity);
@@ -681,8 +688,13 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
     if (!forces) forces = &no_forces;
     result = motus_forces_check(forces, count);
     if (result != MOTUS_OK) return result;
-    for (i = 0; i < count; ++i) /* a negative inverse mass is finite, so the output check would miss it */
-        if (particles[i].inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
+    /* Every particle is checked before anything is computed: a NaN can hide from the output (an immovable
+       particle ignores its force) or reach another particle through a spring, and would be misreported. */
+    for (i = 0; i < count; ++i) {
+        if (particles[i].inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS; /* first, as motus_particle_step */
+        result = motus_particle_check(&particles[i]);
+        if (result != MOTUS_OK) return result;
+    }
 
     x = stepper->scratch;
     v = x + stepper->capacity;
@@ -701,19 +713,21 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
         }
         break;
     case MOTUS_POSITION_VERLET: {
-        motus_vec2 *previous = a + stepper->capacity;
+        motus_vec2 *displacement = a + stepper->capacity; /* x_n - x_{n-1}, kept between steps */
+        const int known = stepper->history_count < count ? stepper->history_count : count;
+        const motus_real ratio = known > 0 ? h / stepper->previous_dt : 0;
         motus__gather(particles, count, x, v);
-        if (stepper->has_history) /* the velocity forces see: (x_n - x_{n-1})/h */
-            for (i = 0; i < count; ++i) v[i] = motus_vec2_scale(motus_vec2_sub(x[i], previous[i]), MOTUS_R(1.0) / h);
+        /* The velocity forces see: the last displacement over its step, (x_n - x_{n-1})/h_p. */
+        for (i = 0; i < known; ++i) v[i] = motus_vec2_scale(displacement[i], MOTUS_R(1.0) / stepper->previous_dt);
         motus__accelerations(forces, particles, count, x, v, t, a);
         for (i = 0; i < count; ++i) {
-            motus_vec2 x_now = x[i], step_a = motus_vec2_scale(a[i], h * h);
-            motus_vec2 drift = stepper->has_history ? motus_vec2_sub(x_now, previous[i])
-                                                    : motus_vec2_add(motus_vec2_scale(particles[i].velocity, h),
-                                                                     motus_vec2_scale(step_a, MOTUS_R(-0.5)));
-            x[i] = motus_vec2_add(motus_vec2_add(x_now, drift), step_a);
-            v[i] = motus_vec2_add(motus_vec2_scale(motus_vec2_sub(x[i], x_now), MOTUS_R(1.0) / h),
-                                  motus_vec2_scale(a[i], MOTUS_R(0.5) * h));
+            motus_vec2 step = i < known ? motus_vec2_add(motus_vec2_scale(displacement[i], ratio),
+                                                         motus_vec2_scale(a[i], h * (h + stepper->previous_dt) * MOTUS_R(0.5)))
+                                        : motus_vec2_add(motus_vec2_scale(particles[i].velocity, h),
+                                                         motus_vec2_scale(a[i], MOTUS_R(0.5) * h * h));
+            x[i] = motus_vec2_add(x[i], step);
+            v[i] = motus_vec2_add(motus_vec2_scale(step, MOTUS_R(1.0) / h), motus_vec2_scale(a[i], MOTUS_R(0.5) * h));
+            a[i] = step; /* the displacement to keep, once the step is accepted */
         }
         break;
     }
@@ -732,7 +746,6 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
             motus__accelerations(forces, particles, count, x, predicted, t + h, a);
             for (i = 0; i < count; ++i) {
                 v[i] = motus_vec2_add(v[i], motus_vec2_scale(motus_vec2_add(kept[i], a[i]), MOTUS_R(0.5) * h));
-                kept[i] = a[i];
             }
         } else {
             for (i = 0; i < count; ++i) {
@@ -744,7 +757,6 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
             motus__accelerations(forces, particles, count, x, predicted, t + h, a);
             for (i = 0; i < count; ++i) {
                 v[i] = motus_vec2_add(v[i], motus_vec2_scale(a[i], MOTUS_R(0.5) * h));
-                kept[i] = a[i];
             }
         }
         break;
@@ -816,20 +828,20 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
     default: return MOTUS_ERROR_UNSUPPORTED;
     }
 
-    /* All or nothing: find the first particle whose new state is not finite. */
-    for (i = 0; i < count; ++i) {
-        if (!motus_vec2_is_finite(x[i]) || !motus_vec2_is_finite(v[i])) {
-            result = motus_particle_check(&particles[i]);
-            return result != MOTUS_OK ? result : MOTUS_ERROR_OVERFLOW;
-        }
-    }
+    /* All or nothing: the inputs were finite, so a non-finite result is an overflow. */
+    for (i = 0; i < count; ++i)
+        if (!motus_vec2_is_finite(x[i]) || !motus_vec2_is_finite(v[i])) return MOTUS_ERROR_OVERFLOW;
     if (stepper->method == MOTUS_POSITION_VERLET) {
-        motus_vec2 *previous = a + stepper->capacity;
-        for (i = 0; i < count; ++i) previous[i] = particles[i].position;
-        stepper->has_history = 1;
+        motus_vec2 *displacement = a + stepper->capacity;
+        for (i = 0; i < count; ++i) displacement[i] = a[i];
+        stepper->history_count = count;
+        stepper->previous_dt = h;
     }
-    if (stepper->method == MOTUS_VELOCITY_VERLET || stepper->method == MOTUS_LEAPFROG)
+    if (stepper->method == MOTUS_VELOCITY_VERLET || stepper->method == MOTUS_LEAPFROG) {
+        motus_vec2 *kept = a + stepper->capacity;
+        for (i = 0; i < count; ++i) kept[i] = a[i]; /* a(x_{n+1}): the next step's first evaluation */
         stepper->has_last_acceleration = 1;
+    }
     for (i = 0; i < count; ++i) {
         particles[i].position = x[i];
         particles[i].velocity = v[i];

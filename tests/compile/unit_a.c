@@ -3,12 +3,60 @@
    compile matrix see all of them. Also compiled as C++ (-x c++). */
 #include "motus.h"
 
+#include <string.h>
+
 int compile_unit_a(void);
+
+/* The stepper API: a spring between two particles under gravity, stepped with RK4. The desc is zeroed with
+   memset: `= {0}` warns in C++ under -Wextra (missing initializers). */
+static void count_calls(void *user_data, int count, const motus_vec2 *positions, const motus_vec2 *velocities,
+                        motus_real time, motus_vec2 *forces) {
+    (void)count, (void)positions, (void)velocities, (void)time, (void)forces;
+    *(int *)user_data += 1;
+}
+
+static int compile_stepper(void) {
+    motus_vec2 scratch[14]; /* RK4: 7 arrays for 2 particles */
+    motus_particle particles[2];
+    motus_spring spring;
+    motus_forces forces;
+    motus_stepper stepper;
+    motus_stepper_desc desc;
+    int calls = 0, bad = 0;
+    memset(&spring, 0, sizeof spring);
+    memset(&forces, 0, sizeof forces);
+    memset(&desc, 0, sizeof desc);
+    spring.a = 0;
+    spring.b = 1;
+    spring.rest_length = 1;
+    spring.stiffness = 10;
+    forces.gravity = motus_v2(0, MOTUS_R(-9.81));
+    forces.springs = &spring;
+    forces.spring_count = 1;
+    forces.callback = count_calls;
+    forces.user_data = &calls;
+    desc.capacity = 2;
+    desc.method = MOTUS_RK4;
+    desc.scratch = scratch;
+    desc.scratch_bytes = sizeof scratch;
+    desc.flags = MOTUS_STEPPER_REUSE_FORCES;
+    bad |= motus_stepper_scratch_size(MOTUS_RK4, 2) != sizeof scratch;
+    bad |= motus_forces_check(&forces, 2) != MOTUS_OK;
+    bad |= motus_stepper_init(&stepper, &desc) != MOTUS_OK;
+    bad |= motus_particle_init(&particles[0], motus_v2(0, 0), 1) != MOTUS_OK;
+    bad |= motus_particle_init(&particles[1], motus_v2(2, 0), 1) != MOTUS_OK;
+    bad |= motus_stepper_step(&stepper, particles, 2, &forces, MOTUS_R(0.5)) != MOTUS_OK;
+    bad |= calls != motus_method_evaluations(MOTUS_RK4, desc.flags) || motus_method_order(MOTUS_RK4) != 4;
+    bad |= stepper.time != MOTUS_R(0.5) || particles[0].position.x <= 0; /* the spring pulled them together */
+    motus_stepper_reset(&stepper);
+    bad |= motus_method_name(MOTUS_RK4) == NULL || motus_method_name(MOTUS_METHOD_COUNT) != NULL;
+    return bad;
+}
 
 int compile_unit_a(void) {
     motus_particle p, wall;
     motus_real phi1, phi2;
-    int bad = 0;
+    int bad = compile_stepper();
     bad |= motus_particle_init(&p, motus_v2(400, 300), 2) != MOTUS_OK;
     bad |= motus_particle_init_immovable(&wall, motus_v2(0, 0)) != MOTUS_OK;
     bad |= motus_particle_add_force(&p, motus_vec2_sub(motus_v2(100, 0), motus_v2(0, 0))) != MOTUS_OK;
