@@ -551,7 +551,7 @@ typedef struct motus_stepper {
     motus_real time;           /* seconds stepped since init: the callback's time */
     int history_count;         /* POSITION_VERLET: particles [0, history_count) have a last displacement */
     motus_real previous_dt;    /* POSITION_VERLET: the step that displacement was made with */
-    int has_last_acceleration; /* REUSE_FORCES: scratch holds a(x_n, v_n) */
+    int kept_acceleration_count; /* REUSE_FORCES: scratch holds a(x_n, v_n) of this many particles */
 } motus_stepper;
 
 /* Names, for tables and plots: "semi_implicit_euler", "rk4", ... NULL for a value out of range. */
@@ -620,7 +620,7 @@ MOTUS_API motus_result motus_stepper_init(motus_stepper *stepper, const motus_st
     stepper->time = 0;
     stepper->history_count = 0;
     stepper->previous_dt = 0;
-    stepper->has_last_acceleration = 0;
+    stepper->kept_acceleration_count = 0;
     return MOTUS_OK;
 }
 
@@ -629,7 +629,7 @@ MOTUS_API motus_result motus_stepper_init(motus_stepper *stepper, const motus_st
 MOTUS_API void motus_stepper_reset(motus_stepper *stepper) {
     if (!stepper) return;
     stepper->history_count = 0;
-    stepper->has_last_acceleration = 0;
+    stepper->kept_acceleration_count = 0;
 }
 
 /* y_out = y + a*s, for the position and velocity halves of a stage. */
@@ -699,7 +699,7 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
     x = stepper->scratch;
     v = x + stepper->capacity;
     a = v + stepper->capacity;
-    reuse = (stepper->flags & MOTUS_STEPPER_REUSE_FORCES) && stepper->has_last_acceleration;
+    reuse = (stepper->flags & MOTUS_STEPPER_REUSE_FORCES) && stepper->kept_acceleration_count == count;
 
     switch (stepper->method) {
     case MOTUS_SEMI_IMPLICIT_EULER:
@@ -840,7 +840,7 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
     if (stepper->method == MOTUS_VELOCITY_VERLET || stepper->method == MOTUS_LEAPFROG) {
         motus_vec2 *kept = a + stepper->capacity;
         for (i = 0; i < count; ++i) kept[i] = a[i]; /* a(x_{n+1}): the next step's first evaluation */
-        stepper->has_last_acceleration = 1;
+        stepper->kept_acceleration_count = count;
     }
     for (i = 0; i < count; ++i) {
         particles[i].position = x[i];

@@ -821,6 +821,26 @@ TEST(reuse_forces_gives_the_same_result) {
     }
 }
 
+TEST(reuse_forces_recomputes_when_the_count_changes) {
+    /* The kept accelerations cover the particles of the last step only: a step over more particles must
+       evaluate again, or the new ones would start from whatever the scratch held. */
+    test_stepper reusing, plain;
+    motus_particle p[CAPACITY], q[CAPACITY];
+    motus_forces f;
+    memset(&f, 0, sizeof f);
+    f.gravity = motus_v2(0, -10);
+    f.attractor_strength = 1;
+    ENSURE_EQ_INT(init_stepper(&reusing, MOTUS_VELOCITY_VERLET, MOTUS_STEPPER_REUSE_FORCES), MOTUS_OK);
+    ENSURE_EQ_INT(init_stepper(&plain, MOTUS_VELOCITY_VERLET, 0), MOTUS_OK);
+    sample_particles(p);
+    sample_particles(q);
+    ENSURE_EQ_INT(motus_stepper_step(&reusing.stepper, p, 1, &f, DT), MOTUS_OK);
+    ENSURE_EQ_INT(motus_stepper_step(&plain.stepper, q, 1, &f, DT), MOTUS_OK);
+    ENSURE_EQ_INT(motus_stepper_step(&reusing.stepper, p, CAPACITY, &f, DT), MOTUS_OK);
+    ENSURE_EQ_INT(motus_stepper_step(&plain.stepper, q, CAPACITY, &f, DT), MOTUS_OK);
+    ENSURE(same_bytes(p, q, sizeof p));
+}
+
 /* =================================================================================================
    Physics that holds exactly or to rounding
    ================================================================================================= */
@@ -1045,6 +1065,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(callback_receives_stage_times),
     TEST_CASE(evaluations_match_callback_calls),
     TEST_CASE(reuse_forces_gives_the_same_result),
+    TEST_CASE(reuse_forces_recomputes_when_the_count_changes),
     TEST_CASE(immovable_particles_do_not_move),
     TEST_CASE(immovable_particle_keeps_its_velocity_in_every_method),
     TEST_CASE(spring_conserves_momentum_and_pulls_together),
