@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Usage: scripts/tradeoff.sh [tradeoff options...]
+# Measures every motus integrator against Boost.Odeint and GSL on the reference problems of bench/problems.h
+# and draws the figures. It installs the Debian 12 packages it needs and are missing (compilers, CMake, the
+# Boost headers, GSL, gnuplot), builds the `tradeoff` target in build-bench/ (Release, -O2, no -march=native
+# so that the numbers hold for any x86-64; configure with -DMOTUS_BENCH_NATIVE=ON to change that), runs it
+# and writes into build-bench/tradeoff/:
+#   tradeoff.csv         every method x precision x problem x dt: error, energy error, evaluations, ns, cost
+#   tradeoff_ratios.csv  the cost ratio motus/peer at every error level both cover
+#   tradeoff.md          the tables (also printed on stdout; progress goes to stderr)
+#   work_precision.png, convergence.png, kepler_energy.png
+# and copies the figures to docs/tradeoff_*.png for the README. About 2 minutes on 2 cores.
+# Options go to the program: --quick (a smoke run in seconds; its figures are not copied to docs/),
+# --particles N (4096), --repetitions R (9), --seconds S (0.02), --orbits K (1000).
+# TRADEOFF_BUILD_DIR and TRADEOFF_OUT override the two directories.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+wanted=(cmake make gcc g++ pkg-config libboost-dev libgsl-dev gnuplot-nox)
+missing=()
+for package in "${wanted[@]}"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+    echo "tradeoff: installing ${missing[*]}" >&2
+    command -v apt-get >/dev/null 2>&1 || { echo "tradeoff: no apt-get here; install the equivalents of: ${missing[*]}" >&2; exit 1; }
+    as_root=()
+    if [ "$(id -u)" -ne 0 ]; then
+        command -v sudo >/dev/null 2>&1 || { echo "tradeoff: run as root or install sudo (missing: ${missing[*]})" >&2; exit 1; }
+        as_root=(sudo)
+    fi
+    export DEBIAN_FRONTEND=noninteractive
+    # Try with the package lists as they are; refresh them once if that fails (new machine, stale lists).
+    if ! "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}" </dev/null; then
+        "${as_root[@]}" apt-get update -q </dev/null
+        "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}" </dev/null
+    fi
+fi
+gnuplot -e "set terminal pngcairo" </dev/null 2>/dev/null ||
+    { echo "tradeoff: this gnuplot has no pngcairo terminal (Debian's gnuplot-nox has it)" >&2; exit 1; }
+
+build=${TRADEOFF_BUILD_DIR:-build-bench}
+out=${TRADEOFF_OUT:-$build/tradeoff}
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMOTUS_BUILD_BENCH=ON -DMOTUS_BUILD_TESTS=OFF \
+      -DMOTUS_BUILD_EXAMPLES=OFF -DMOTUS_INSTALL=OFF >&2
+if ! cmake --build "$build" --target tradeoff --parallel "$(nproc 2>/dev/null || echo 2)" >&2; then
+    echo "tradeoff: the target did not build; see above (bench/CMakeLists.txt skips it without Boost or GSL)" >&2
+    exit 1
+fi
+
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+"$build/bench/tradeoff" --out "$out" "$@" </dev/null
+gnuplot -e "out='$out'" bench/plot_tradeoff.gp </dev/null
+
+quick=0
+for argument in "$@"; do [ "$argument" = "--quick" ] && quick=1; done
+if [ "$quick" -eq 0 ]; then
+    for figure in work_precision convergence kepler_energy; do
+        cp "$out/$figure.png" "docs/tradeoff_$figure.png"
+    done
+    echo "tradeoff: results in $out; figures copied to docs/tradeoff_{work_precision,convergence,kepler_energy}.png" >&2
+else
+    echo "tradeoff: results in $out (quick run: docs/ left as it was)" >&2
+fi
