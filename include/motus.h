@@ -77,6 +77,14 @@
 #define MOTUS_API static inline
 #endif
 
+/* For the few per-particle helpers that must be inlined into their loops so that the compiler sees the
+   constant flags they are called with and drops the work of force terms a scene does not use. */
+#if defined(__GNUC__) || defined(__clang__)
+#define MOTUS__INLINE static inline __attribute__((always_inline))
+#else
+#define MOTUS__INLINE static inline
+#endif
+
 #if defined(MOTUS_SQRT) || defined(MOTUS_EXP) || defined(MOTUS_EXPM1) || defined(MOTUS_POW)
 #if !defined(MOTUS_SQRT) || !defined(MOTUS_EXP) || !defined(MOTUS_EXPM1) || !defined(MOTUS_POW)
 #error "motus.h: define all of MOTUS_SQRT, MOTUS_EXP, MOTUS_EXPM1 and MOTUS_POW, or none of them"
@@ -396,7 +404,7 @@ typedef struct motus_forces {
 /* MOTUS_OK if the model can be used with `count` particles: finite fields, non-negative drags, stiffness,
    damping, rest lengths and attractor strength, spring ends in [0, count) (b may be -1). */
 MOTUS_API motus_result motus_forces_check(const motus_forces *forces, int count) {
-    int i;
+    int i, not_finite = 0, out_of_range = 0;
     if (!forces) return MOTUS_ERROR_NULL_POINTER;
     if (!motus_vec2_is_finite(forces->gravity) || !motus_real_is_finite(forces->linear_drag) ||
         !motus_real_is_finite(forces->quadratic_drag) || !motus_real_is_finite(forces->attractor_strength) ||
@@ -405,61 +413,86 @@ MOTUS_API motus_result motus_forces_check(const motus_forces *forces, int count)
     if (forces->linear_drag < 0 || forces->quadratic_drag < 0 || forces->attractor_strength < 0 ||
         forces->spring_count < 0 || (forces->spring_count > 0 && !forces->springs))
         return MOTUS_ERROR_INVALID_FORCES;
+    /* Every step runs this, so one combined test per spring rather than a branch per field. */
     for (i = 0; i < forces->spring_count; ++i) {
         const motus_spring *s = &forces->springs[i];
-        if (!motus_vec2_is_finite(s->anchor) || !motus_real_is_finite(s->rest_length) ||
-            !motus_real_is_finite(s->stiffness) || !motus_real_is_finite(s->damping))
-            return MOTUS_ERROR_NOT_FINITE;
-        if (s->a < 0 || s->a >= count || s->b < -1 || s->b >= count || s->b == s->a || s->rest_length < 0 ||
-            s->stiffness < 0 || s->damping < 0)
-            return MOTUS_ERROR_INVALID_FORCES;
+        not_finite |= (motus_vec2_is_finite(s->anchor) & motus_real_is_finite(s->rest_length) &
+                       motus_real_is_finite(s->stiffness) & motus_real_is_finite(s->damping)) == 0;
+        out_of_range |= (s->a < 0) | (s->a >= count) | (s->b < -1) | (s->b >= count) | (s->b == s->a) |
+                        (s->rest_length < 0) | (s->stiffness < 0) | (s->damping < 0);
     }
-    return MOTUS_OK;
+    if (not_finite) return MOTUS_ERROR_NOT_FINITE;
+    return out_of_range ? MOTUS_ERROR_INVALID_FORCES : MOTUS_OK;
 }
 
-/* Accelerations of every particle at the stage state (x, v, time). */
+/* Nonzero if any component is NaN or infinite: bit operations only, so a loop can OR it up without a branch. */
+MOTUS__INLINE int motus__vec2_not_finite(motus_vec2 v) {
+    return (motus_real_is_finite(v.x) & motus_real_is_finite(v.y)) == 0;
+}
+
+/* Hooke with damping, without a square root unless the rest length needs one:
+       F = -k*d + k*L*d/|d| - c*((v_a - v_b).d)/|d|^2 * d,     d = x_a - x_b
+   which is -k*(|d| - L)*d/|d| - c*(stretch rate)*d/|d| written so that the common zero-length spring
+   (and its damping) costs a multiply and a divide. */
+MOTUS__INLINE motus_vec2 motus__spring_force(const motus_spring *s, motus_vec2 d, motus_vec2 relative_velocity) {
+    motus_real d2 = motus_vec2_dot(d, d), along;
+    motus_vec2 f = motus_vec2_scale(d, -s->stiffness);
+    if (!(d2 > 0)) return f; /* both ends at one point: no direction to push along (or NaN: passed on) */
+    along = -s->damping * motus_vec2_dot(relative_velocity, d) / d2;
+    if (s->rest_length != 0) along += s->stiffness * s->rest_length / MOTUS_SQRT(d2);
+    return motus_vec2_add(f, motus_vec2_scale(d, along));
+}
+
+/* One particle's acceleration from its summed force (newtons) and the per-particle terms. quadratic and
+   attractor are constants where it is inlined, so unused terms cost nothing. Gravity and linear drag are
+   always applied: with zero values they add exactly zero. An immovable particle gets 0 (or NaN if
+   something it was given is NaN, so that the step reports it instead of hiding it). */
+MOTUS__INLINE motus_vec2 motus__particle_acceleration(const motus_forces *f, motus_vec2 force, motus_real inverse_mass,
+                                                      motus_vec2 x, motus_vec2 v, int quadratic, int attractor) {
+    motus_vec2 a = motus_vec2_add(motus_vec2_scale(force, inverse_mass), f->gravity);
+    a = motus_vec2_sub(a, motus_vec2_scale(v, f->linear_drag));
+    if (quadratic) a = motus_vec2_sub(a, motus_vec2_scale(v, f->quadratic_drag * motus_vec2_length(v)));
+    if (attractor) {
+        motus_vec2 r = motus_vec2_sub(x, f->attractor_position);
+        motus_real r2 = motus_vec2_dot(r, r);
+        if (r2 > 0) a = motus_vec2_sub(a, motus_vec2_scale(r, f->attractor_strength / (r2 * MOTUS_SQRT(r2))));
+    }
+    return motus_vec2_scale(a, (motus_real)(inverse_mass != 0));
+}
+
+/* Which of the costly per-particle terms are on: an index for the switches below. */
+MOTUS_API int motus__terms(const motus_forces *f) {
+    return (f->quadratic_drag != 0) | ((f->attractor_strength != 0) << 1);
+}
+
+/* Accelerations of every particle at the stage state (x, v, time). Springs and the callback couple
+   particles, so their forces are summed first over the whole array; the rest is one pass. */
 MOTUS_API void motus__accelerations(const motus_forces *forces, const motus_particle *particles, int count,
                                     const motus_vec2 *x, const motus_vec2 *v, motus_real time,
                                     motus_vec2 *acceleration) {
     int i;
-    /* Forces first (newtons), then divided by mass; accelerations after. */
     for (i = 0; i < count; ++i) acceleration[i] = particles[i].force;
     for (i = 0; i < forces->spring_count; ++i) {
         const motus_spring *s = &forces->springs[i];
-        motus_vec2 other = s->b < 0 ? s->anchor : x[s->b];
-        motus_vec2 other_velocity = s->b < 0 ? motus_v2(0, 0) : v[s->b];
-        motus_vec2 d = motus_vec2_sub(x[s->a], other);
-        motus_real length = motus_vec2_length(d);
-        motus_vec2 f;
-        if (length > 0) {
-            motus_vec2 direction = motus_vec2_scale(d, MOTUS_R(1.0) / length);
-            motus_real stretch_rate = motus_vec2_dot(motus_vec2_sub(v[s->a], other_velocity), direction);
-            f = motus_vec2_scale(direction, -s->stiffness * (length - s->rest_length) - s->damping * stretch_rate);
-        } else {
-            f = motus_v2(0, 0); /* ends on top of each other: no direction to push along */
-        }
+        int anchored = s->b < 0;
+        motus_vec2 d = motus_vec2_sub(x[s->a], anchored ? s->anchor : x[s->b]);
+        motus_vec2 relative_velocity = anchored ? v[s->a] : motus_vec2_sub(v[s->a], v[s->b]);
+        motus_vec2 f = motus__spring_force(s, d, relative_velocity);
         acceleration[s->a] = motus_vec2_add(acceleration[s->a], f);
-        if (s->b >= 0) acceleration[s->b] = motus_vec2_sub(acceleration[s->b], f);
+        if (!anchored) acceleration[s->b] = motus_vec2_sub(acceleration[s->b], f);
     }
     if (forces->callback) forces->callback(forces->user_data, count, x, v, time, acceleration);
-    for (i = 0; i < count; ++i) {
-        motus_real inverse_mass = particles[i].inverse_mass;
-        motus_vec2 a;
-        if (inverse_mass == 0) {
-            acceleration[i] = motus_v2(0, 0);
-            continue;
-        }
-        a = motus_vec2_add(motus_vec2_scale(acceleration[i], inverse_mass), forces->gravity);
-        if (forces->linear_drag != 0) a = motus_vec2_sub(a, motus_vec2_scale(v[i], forces->linear_drag));
-        if (forces->quadratic_drag != 0)
-            a = motus_vec2_sub(a, motus_vec2_scale(v[i], forces->quadratic_drag * motus_vec2_length(v[i])));
-        if (forces->attractor_strength != 0) {
-            motus_vec2 r = motus_vec2_sub(x[i], forces->attractor_position);
-            motus_real r2 = motus_vec2_dot(r, r);
-            if (r2 > 0) a = motus_vec2_sub(a, motus_vec2_scale(r, forces->attractor_strength / (r2 * MOTUS_SQRT(r2))));
-        }
-        acceleration[i] = a;
+#define MOTUS__ACCELERATE(quadratic, attractor)                                                                  \
+    for (i = 0; i < count; ++i)                                                                                \
+        acceleration[i] = motus__particle_acceleration(forces, acceleration[i], particles[i].inverse_mass, x[i], \
+                                                       v[i], quadratic, attractor);
+    switch (motus__terms(forces)) {
+    case 0: MOTUS__ACCELERATE(0, 0) break;
+    case 1: MOTUS__ACCELERATE(1, 0) break;
+    case 2: MOTUS__ACCELERATE(0, 1) break;
+    default: MOTUS__ACCELERATE(1, 1) break;
     }
+#undef MOTUS__ACCELERATE
 }
 
 /* =================================================================================================
@@ -659,18 +692,62 @@ MOTUS_API motus_result motus__step_exact_drag(const motus_forces *forces, const 
     decay = MOTUS_EXP(-forces->linear_drag * h);
     for (i = 0; i < count; ++i) {
         const motus_particle *p = &particles[i];
-        motus_vec2 a;
-        if (p->inverse_mass == 0) { /* nothing acts on it, drag included: it keeps its velocity */
-            v[i] = p->velocity;
-            x[i] = motus_vec2_add(p->position, motus_vec2_scale(p->velocity, h));
-            continue;
-        }
-        a = motus_vec2_add(motus_vec2_scale(p->force, p->inverse_mass), forces->gravity);
-        v[i] = motus_vec2_add(motus_vec2_scale(p->velocity, decay), motus_vec2_scale(a, h * phi1));
-        x[i] = motus_vec2_add(p->position, motus_vec2_add(motus_vec2_scale(p->velocity, h * phi1),
+        /* Nothing acts on an immovable particle, drag included: it keeps its velocity (decay 1, phi1 1). */
+        const int movable = p->inverse_mass != 0;
+        const motus_real particle_decay = movable ? decay : 1, particle_phi1 = movable ? phi1 : 1;
+        motus_vec2 a = motus_vec2_scale(motus_vec2_add(motus_vec2_scale(p->force, p->inverse_mass), forces->gravity),
+                                        (motus_real)movable);
+        v[i] = motus_vec2_add(motus_vec2_scale(p->velocity, particle_decay), motus_vec2_scale(a, h * particle_phi1));
+        x[i] = motus_vec2_add(p->position, motus_vec2_add(motus_vec2_scale(p->velocity, h * particle_phi1),
                                                           motus_vec2_scale(a, h * h * phi2)));
     }
     return MOTUS_OK;
+}
+
+/* Semi-implicit or explicit Euler in one pass over particles whose forces do not couple them (no springs,
+   no callback): read, accelerate, write the new state to x, v. Returns nonzero if anything came out
+   non-finite or a mass was negative. semi, quadratic and attractor are constants where it is inlined. */
+MOTUS__INLINE int motus__euler_pass(const motus_forces *f, const motus_particle *particles, int count, motus_real h,
+                                    motus_vec2 *x, motus_vec2 *v, int semi, int quadratic, int attractor) {
+    motus_real check = 0;
+    int i, negative_mass = 0;
+    for (i = 0; i < count; ++i) {
+        const motus_particle *p = &particles[i];
+        motus_vec2 a = motus__particle_acceleration(f, p->force, p->inverse_mass, p->position, p->velocity,
+                                                    quadratic, attractor);
+        motus_vec2 velocity = motus_vec2_add(p->velocity, motus_vec2_scale(a, h));
+        motus_vec2 position = motus_vec2_add(p->position, motus_vec2_scale(semi ? velocity : p->velocity, h));
+        x[i] = position;
+        v[i] = velocity;
+        check += (position.x + position.y) + (velocity.x + velocity.y);
+        negative_mass |= p->inverse_mass < 0;
+    }
+    return negative_mass | !motus_real_is_finite(check);
+}
+
+/* A sum of every new value is NaN or infinite if any value is, which costs far less than testing each
+   one. It can also overflow with every value finite (positions near the float maximum): only then are the
+   values tested one by one. Returns nonzero if the state really is not finite, or a mass is negative. */
+MOTUS_API int motus__state_broken(const motus_particle *particles, int count, const motus_vec2 *x,
+                                  const motus_vec2 *v, int suspicious) {
+    int i, broken = 0;
+    if (!suspicious) return 0;
+    for (i = 0; i < count; ++i)
+        broken |= motus__vec2_not_finite(x[i]) | motus__vec2_not_finite(v[i]) | (particles[i].inverse_mass < 0);
+    return broken;
+}
+
+/* Why a step that produced a non-finite state (or met a negative mass) failed: a broken particle, or else
+   an overflow of finite inputs (the force model was checked before the step). */
+MOTUS_API motus_result motus__diagnose(const motus_particle *particles, int count) {
+    motus_result result;
+    int i;
+    for (i = 0; i < count; ++i) {
+        if (particles[i].inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS; /* first, as motus_particle_step */
+        result = motus_particle_check(&particles[i]);
+        if (result != MOTUS_OK) return result;
+    }
+    return MOTUS_ERROR_OVERFLOW;
 }
 
 /* Advances particles[0..count) by dt under `forces` (NULL: no forces but the accumulated ones) with the
@@ -681,20 +758,17 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
     motus_vec2 *x, *v, *a;
     const motus_real h = dt, t = stepper ? stepper->time : 0;
     motus_result result;
-    int i, reuse;
+    int i, reuse, bad = 0, checked = 0, suspicious = 0;
     if (!stepper || (!particles && count > 0)) return MOTUS_ERROR_NULL_POINTER;
     if (count < 0 || count > stepper->capacity) return MOTUS_ERROR_INVALID_COUNT;
     if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (!forces) forces = &no_forces;
+    /* The force model is checked up front (its springs index the arrays). The particles are not: a NaN or
+       Inf in one, or a negative mass, makes the new state non-finite or trips `bad` below, and only then
+       are they searched for the culprit. Nothing can hide: an immovable particle passes a NaN on, and a
+       value a method does not read this step is checked where it is skipped. */
     result = motus_forces_check(forces, count);
     if (result != MOTUS_OK) return result;
-    /* Every particle is checked before anything is computed: a NaN can hide from the output (an immovable
-       particle ignores its force) or reach another particle through a spring, and would be misreported. */
-    for (i = 0; i < count; ++i) {
-        if (particles[i].inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS; /* first, as motus_particle_step */
-        result = motus_particle_check(&particles[i]);
-        if (result != MOTUS_OK) return result;
-    }
 
     x = stepper->scratch;
     v = x + stepper->capacity;
@@ -704,6 +778,21 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
     switch (stepper->method) {
     case MOTUS_SEMI_IMPLICIT_EULER:
     case MOTUS_EXPLICIT_EULER:
+        if (forces->spring_count == 0 && !forces->callback) {
+            const int semi = stepper->method == MOTUS_SEMI_IMPLICIT_EULER;
+            switch (motus__terms(forces) * 2 + semi) {
+            case 0: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 0, 0, 0); break;
+            case 1: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 1, 0, 0); break;
+            case 2: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 0, 1, 0); break;
+            case 3: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 1, 1, 0); break;
+            case 4: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 0, 0, 1); break;
+            case 5: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 1, 0, 1); break;
+            case 6: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 0, 1, 1); break;
+            default: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 1, 1, 1); break;
+            }
+            checked = 1;
+            break;
+        }
         motus__gather(particles, count, x, v);
         motus__accelerations(forces, particles, count, x, v, t, a);
         for (i = 0; i < count; ++i) {
@@ -718,7 +807,10 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
         const motus_real ratio = known > 0 ? h / stepper->previous_dt : 0;
         motus__gather(particles, count, x, v);
         /* The velocity forces see: the last displacement over its step, (x_n - x_{n-1})/h_p. */
-        for (i = 0; i < known; ++i) v[i] = motus_vec2_scale(displacement[i], MOTUS_R(1.0) / stepper->previous_dt);
+        for (i = 0; i < known; ++i) {
+            bad |= motus__vec2_not_finite(v[i]); /* the velocity given is replaced here: see that it was fine */
+            v[i] = motus_vec2_scale(displacement[i], MOTUS_R(1.0) / stepper->previous_dt);
+        }
         motus__accelerations(forces, particles, count, x, v, t, a);
         for (i = 0; i < count; ++i) {
             motus_vec2 step = i < known ? motus_vec2_add(motus_vec2_scale(displacement[i], ratio),
@@ -737,6 +829,8 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
         motus_vec2 *predicted = kept + stepper->capacity; /* v_n + a_n*h, the velocity the end forces see */
         motus__gather(particles, count, x, v);
         if (!reuse) motus__accelerations(forces, particles, count, x, v, t, kept);
+        else /* the forces given are not evaluated this time: see that they were fine */
+            for (i = 0; i < count; ++i) bad |= motus__vec2_not_finite(particles[i].force);
         if (stepper->method == MOTUS_VELOCITY_VERLET) {
             for (i = 0; i < count; ++i) {
                 x[i] = motus_vec2_add(x[i], motus_vec2_add(motus_vec2_scale(v[i], h),
@@ -828,9 +922,18 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
     default: return MOTUS_ERROR_UNSUPPORTED;
     }
 
-    /* All or nothing: the inputs were finite, so a non-finite result is an overflow. */
-    for (i = 0; i < count; ++i)
-        if (!motus_vec2_is_finite(x[i]) || !motus_vec2_is_finite(v[i])) return MOTUS_ERROR_OVERFLOW;
+    /* All or nothing: write back only a state that is finite everywhere (the fused Euler pass summed its
+       values as it went). */
+    if (!checked) {
+        motus_real check = 0;
+        int negative_mass = 0;
+        for (i = 0; i < count; ++i) {
+            check += (x[i].x + x[i].y) + (v[i].x + v[i].y);
+            negative_mass |= particles[i].inverse_mass < 0;
+        }
+        suspicious = negative_mass | !motus_real_is_finite(check);
+    }
+    if (bad || motus__state_broken(particles, count, x, v, suspicious)) return motus__diagnose(particles, count);
     if (stepper->method == MOTUS_POSITION_VERLET) {
         motus_vec2 *displacement = a + stepper->capacity;
         for (i = 0; i < count; ++i) displacement[i] = a[i];
