@@ -1,20 +1,23 @@
 #!/usr/bin/env bash
-# Usage: scripts/deps.sh [demo|test]
-# Installs the Debian 12 packages that the demo or the test suite needs and that are missing; installs
-# nothing when all are present. As root it runs apt-get itself; otherwise through sudo.
+# Usage: scripts/deps.sh [demo|test|bench]
+# Installs the Debian 12 packages that the demo, the test suite or the benchmarks need and that are
+# missing; installs nothing when all are present. As root it runs apt-get itself; otherwise through sudo.
 set -euo pipefail
 
 demo=(cmake make gcc pkg-config python3 libx11-dev libgl1-mesa-dri libglx-mesa0 xvfb xauth
       libxrandr2 libxcursor1 libxi6 libxinerama1 libxext6 libxrender1 libx11-xcb1)
-test=("${demo[@]}" g++ clang tcc libosmesa6-dev libstb-dev xdotool)
+# The tests also build the benchmarks (to keep them compiling) and run them once in their quick mode.
+test=("${demo[@]}" g++ clang tcc libosmesa6-dev libstb-dev xdotool libboost-dev libgsl-dev gnuplot-nox)
+bench=(cmake make gcc g++ pkg-config libboost-dev libgsl-dev gnuplot-nox)
 
 case "${1:-test}" in
     demo) wanted=("${demo[@]}") ;;
     test) wanted=("${test[@]}") ;;
-    *) echo "usage: $0 [demo|test]" >&2; exit 2 ;;
+    bench) wanted=("${bench[@]}") ;;
+    *) echo "usage: $0 [demo|test|bench]" >&2; exit 2 ;;
 esac
 # raylib comes from PyPI wheels (scripts/bootstrap-raylib.sh), fetched with pip.
-python3 -m pip --version >/dev/null 2>&1 || wanted+=(python3-pip)
+[ "${1:-test}" = bench ] || python3 -m pip --version >/dev/null 2>&1 || wanted+=(python3-pip)
 
 missing=()
 for package in "${wanted[@]}"; do
@@ -37,7 +40,7 @@ if [ "$(id -u)" -ne 0 ]; then
 fi
 export DEBIAN_FRONTEND=noninteractive
 # Try with the package lists as they are; refresh them once if that fails (new machine, stale lists).
-if ! "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"; then
-    "${as_root[@]}" apt-get update -q
-    "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+if ! "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}" </dev/null; then
+    "${as_root[@]}" apt-get update -q </dev/null
+    "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}" </dev/null
 fi

@@ -16,26 +16,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-wanted=(cmake make gcc g++ pkg-config libboost-dev libgsl-dev gnuplot-nox)
-missing=()
-for package in "${wanted[@]}"; do
-    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-    echo "tradeoff: installing ${missing[*]}" >&2
-    command -v apt-get >/dev/null 2>&1 || { echo "tradeoff: no apt-get here; install the equivalents of: ${missing[*]}" >&2; exit 1; }
-    as_root=()
-    if [ "$(id -u)" -ne 0 ]; then
-        command -v sudo >/dev/null 2>&1 || { echo "tradeoff: run as root or install sudo (missing: ${missing[*]})" >&2; exit 1; }
-        as_root=(sudo)
-    fi
-    export DEBIAN_FRONTEND=noninteractive
-    # Try with the package lists as they are; refresh them once if that fails (new machine, stale lists).
-    if ! "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}" </dev/null; then
-        "${as_root[@]}" apt-get update -q </dev/null
-        "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}" </dev/null
-    fi
-fi
+scripts/deps.sh bench >&2
 gnuplot -e "set terminal pngcairo" </dev/null 2>/dev/null ||
     { echo "tradeoff: this gnuplot has no pngcairo terminal (Debian's gnuplot-nox has it)" >&2; exit 1; }
 
