@@ -64,6 +64,7 @@
 #define MOTUS_VERSION (MOTUS_VERSION_MAJOR * 10000 + MOTUS_VERSION_MINOR * 100 + MOTUS_VERSION_PATCH)
 
 #include <math.h>
+#include <limits.h> /* INT_MAX */
 #include <stddef.h> /* size_t, NULL */
 #include <stdint.h> /* fixed-width integers for the bit-level finite check; no library code */
 #ifdef __cplusplus
@@ -147,6 +148,7 @@ typedef enum motus_result {
     MOTUS_ERROR_INVALID_FORCES,    /* a force model field out of range (negative drag, spring index, ...) */
     MOTUS_ERROR_SCRATCH_TOO_SMALL, /* the memory given to a stepper is smaller than it needs */
     MOTUS_ERROR_UNSUPPORTED,       /* the method cannot handle this force model (see motus_method) */
+    MOTUS_ERROR_INVALID_SCENE,     /* a scene that contradicts itself or its batch (see motus_scene_check) */
     MOTUS_RESULT_COUNT
 } motus_result;
 
@@ -307,6 +309,35 @@ MOTUS_API motus_result motus_particle_damp_per_second(motus_particle *particle, 
     if (!motus__damping_is_valid(retained_per_second)) return MOTUS_ERROR_INVALID_DAMPING;
     if (!motus_vec2_is_finite(particle->velocity)) return MOTUS_ERROR_NOT_FINITE;
     particle->velocity = motus_vec2_scale(particle->velocity, MOTUS_POW(retained_per_second, dt));
+    return MOTUS_OK;
+}
+
+/* Keeps a particle inside the box [min, max]: past a wall its position is mirrored back inside and that
+   velocity component is multiplied by -restitution (in [0, 1]; 1 keeps all speed). The batch kernels'
+   bounds do the same, in the same order (after the step and the damping). */
+MOTUS_API motus_result motus_particle_bounce(motus_particle *particle, motus_vec2 min, motus_vec2 max,
+                                             motus_real restitution) {
+    motus_real *position, *velocity;
+    const motus_real lo[2] = {min.x, min.y}, hi[2] = {max.x, max.y};
+    int d;
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    if (!motus_vec2_is_finite(min) || !motus_vec2_is_finite(max) || !motus_real_is_finite(restitution) ||
+        !motus_vec2_is_finite(particle->position) || !motus_vec2_is_finite(particle->velocity))
+        return MOTUS_ERROR_NOT_FINITE;
+    if (!(min.x <= max.x) || !(min.y <= max.y)) return MOTUS_ERROR_INVALID_SCENE;
+    if (!motus__damping_is_valid(restitution)) return MOTUS_ERROR_INVALID_DAMPING;
+    for (d = 0; d < 2; ++d) {
+        position = d == 0 ? &particle->position.x : &particle->position.y;
+        velocity = d == 0 ? &particle->velocity.x : &particle->velocity.y;
+        if (*position < lo[d]) {
+            *position = lo[d] + (lo[d] - *position);
+            *velocity = *velocity * -restitution;
+        }
+        if (*position > hi[d]) {
+            *position = hi[d] - (*position - hi[d]);
+            *velocity = *velocity * -restitution;
+        }
+    }
     return MOTUS_OK;
 }
 
@@ -954,6 +985,463 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
 }
 
 /* =================================================================================================
+   Batch kernels: many particles in arrays, only the work the scene has
+   =================================================================================================
+   For thousands to millions of particles: one array per component (x[], y[], vx[], ...; "structure of
+   arrays"), owned by the caller, stepped over a range [first, first + count) so that a job system or
+   OpenMP can split the work: each particle's result does not depend on how the range is split.
+
+   The scene says what it has (MOTUS_HAS_*); motus picks a kernel compiled for exactly that: arrays the
+   scene does not have are never loaded (they may be NULL) and there is no per-particle test of a feature.
+   Gravity, linear drag, damping, per-particle mass and accumulated forces have a kernel for each of their
+   32 combinations; quadratic drag, an attractor, bounds or explicit Euler switch to one general kernel
+   that computes every term (the ones the scene lacks with neutral values). The particles are processed
+   MOTUS_SIMD_BYTES at a time with the compiler's vector extensions (GCC, Clang), one at a time elsewhere;
+   every lane does the same IEEE operations in the same order as motus_stepper_step followed by
+   motus_particle_damp_per_step / _per_second and motus_particle_bounce, so the two agree bit for bit
+   (in a build without floating-point contraction: see -ffp-contract=off).
+
+   Per particle and step, in this order (SI units; * is per component):
+       a = F*inverse_mass + gravity - k*v - c*|v|*v - mu*r/|r|^3     (r from the attractor)
+       v += a*h;  x += v*h           (semi-implicit Euler; explicit Euler moves x with the old v)
+       v *= damping                  (per step), or damping^h (per second)
+       bounds: past a wall, x is mirrored back inside and v *= -restitution
+   Springs couple particles, so they are not part of the per-range step: motus_batch_add_spring_forces
+   adds their forces to the force arrays for the whole batch first (2D).
+
+   Checks: the scene and the arguments are checked on every call (O(1)). The particle data is not read
+   twice in release builds: the kernel sums what it writes, and a NaN or Inf in the new state makes the
+   step return MOTUS_ERROR_NOT_FINITE after the range was written. Define MOTUS_CHECKED to have every step
+   check its range first (motus_batch_check) and write nothing on bad data; or call motus_batch_check
+   yourself where data comes in. */
+
+enum {
+    MOTUS_HAS_GRAVITY = 1u << 0,            /* scene.gravity */
+    MOTUS_HAS_LINEAR_DRAG = 1u << 1,        /* scene.linear_drag */
+    MOTUS_HAS_DAMPING_PER_STEP = 1u << 2,   /* scene.damping: v *= damping after each step */
+    MOTUS_HAS_DAMPING_PER_SECOND = 1u << 3, /* scene.damping: v *= damping^dt after each step */
+    MOTUS_HAS_PARTICLE_MASS = 1u << 4,      /* batch.inverse_mass[]; otherwise scene.inverse_mass for all */
+    MOTUS_HAS_FORCES = 1u << 5,             /* batch.force[][]: accumulated forces, springs add to them */
+    MOTUS_HAS_QUADRATIC_DRAG = 1u << 6,     /* scene.quadratic_drag */
+    MOTUS_HAS_ATTRACTOR = 1u << 7,          /* scene.attractor, scene.attractor_strength */
+    MOTUS_HAS_BOUNDS = 1u << 8              /* scene.bounds_min, bounds_max, restitution */
+};
+#define MOTUS__HAS_KNOWN ((1u << 9) - 1)
+
+typedef struct motus_scene {
+    unsigned has;                 /* MOTUS_HAS_* of what the scene has; other fields are ignored */
+    motus_method method;          /* MOTUS_SEMI_IMPLICIT_EULER (0) or MOTUS_EXPLICIT_EULER */
+    motus_real gravity[3];        /* uniform acceleration, m/s^2 (z unused in 2D) */
+    motus_real linear_drag;       /* k >= 0, 1/s */
+    motus_real quadratic_drag;    /* c >= 0, 1/m */
+    motus_real damping;           /* in [0, 1]: velocity kept per step, or per second */
+    motus_real inverse_mass;      /* >= 0, every particle's without MOTUS_HAS_PARTICLE_MASS (0: immovable) */
+    motus_real attractor[3];      /* position */
+    motus_real attractor_strength; /* mu = G*M >= 0, m^3/s^2 */
+    motus_real bounds_min[3], bounds_max[3]; /* the box particles stay in */
+    motus_real restitution;       /* in [0, 1]: speed kept through a bounce */
+} motus_scene;
+
+typedef struct motus_batch {
+    int dimensions;             /* 2 or 3 */
+    motus_real *position[3];    /* x[], y[] (, z[]) */
+    motus_real *velocity[3];
+    motus_real *force[3];         /* with MOTUS_HAS_FORCES, else unused (may be NULL) */
+    motus_real *inverse_mass;     /* with MOTUS_HAS_PARTICLE_MASS, else unused (may be NULL) */
+} motus_batch;
+
+/* ---- lanes: a vector of motus_real where the compiler has vector extensions, one value elsewhere ---- */
+#ifndef MOTUS_SIMD_BYTES
+#if defined(__AVX512F__)
+#define MOTUS_SIMD_BYTES 64
+#elif defined(__AVX__)
+#define MOTUS_SIMD_BYTES 32
+#else
+#define MOTUS_SIMD_BYTES 16 /* SSE2 and NEON: every x86-64 and arm64 */
+#endif
+#endif
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(MOTUS_NO_SIMD) && MOTUS_SIMD_BYTES > 0
+#define MOTUS__VECTOR 1
+#ifdef MOTUS_DOUBLE
+typedef int64_t motus__mask __attribute__((vector_size(MOTUS_SIMD_BYTES)));
+#else
+typedef int32_t motus__mask __attribute__((vector_size(MOTUS_SIMD_BYTES)));
+#endif
+typedef motus_real motus__lane __attribute__((vector_size(MOTUS_SIMD_BYTES)));
+#define MOTUS__LANES ((int)(MOTUS_SIMD_BYTES / sizeof(motus_real)))
+#else
+#define MOTUS__VECTOR 0
+typedef int motus__mask;
+typedef motus_real motus__lane;
+#define MOTUS__LANES 1
+#endif
+
+MOTUS__INLINE motus__lane motus__splat(motus_real value) {
+#if MOTUS__VECTOR
+    motus__lane lanes;
+    int i;
+    for (i = 0; i < MOTUS__LANES; ++i) lanes[i] = value;
+    return lanes;
+#else
+    return value;
+#endif
+}
+/* Loads n <= MOTUS__LANES values (the rest 0) from possibly unaligned memory; stores n back. */
+MOTUS__INLINE motus__lane motus__load(const motus_real *from, int n) {
+#if MOTUS__VECTOR
+    motus__lane lanes = motus__splat(0);
+    if (n == MOTUS__LANES) __builtin_memcpy(&lanes, from, sizeof lanes);
+    else __builtin_memcpy(&lanes, from, (size_t)n * sizeof(motus_real));
+    return lanes;
+#else
+    (void)n;
+    return *from;
+#endif
+}
+MOTUS__INLINE void motus__store(motus_real *to, motus__lane lanes, int n) {
+#if MOTUS__VECTOR
+    if (n == MOTUS__LANES) __builtin_memcpy(to, &lanes, sizeof lanes);
+    else __builtin_memcpy(to, &lanes, (size_t)n * sizeof(motus_real));
+#else
+    (void)n;
+    *to = lanes;
+#endif
+}
+MOTUS__INLINE motus__lane motus__sqrt(motus__lane x) {
+#if MOTUS__VECTOR
+    int i;
+    for (i = 0; i < MOTUS__LANES; ++i) x[i] = MOTUS_SQRT(x[i]);
+    return x;
+#else
+    return MOTUS_SQRT(x);
+#endif
+}
+/* mask ? a : b, lane by lane, without a branch. */
+MOTUS__INLINE motus__lane motus__select(motus__mask mask, motus__lane a, motus__lane b) {
+#if MOTUS__VECTOR
+    motus__mask bits_a, bits_b, chosen;
+    motus__lane result;
+    __builtin_memcpy(&bits_a, &a, sizeof a);
+    __builtin_memcpy(&bits_b, &b, sizeof b);
+    chosen = (mask & bits_a) | (~mask & bits_b);
+    __builtin_memcpy(&result, &chosen, sizeof result);
+    return result;
+#else
+    return mask ? a : b;
+#endif
+}
+
+/* The step's constants, worked out once per call. */
+typedef struct motus__kernel_constants {
+    motus_real h, gravity[3], linear_drag, quadratic_drag, damping, inverse_mass;
+    motus_real attractor[3], attractor_strength, bounds_min[3], bounds_max[3], restitution;
+    int semi_implicit;
+} motus__kernel_constants;
+
+/* Kernel flags: the first five choose among the 32 fast kernels; GENERAL adds every other term. */
+#define MOTUS__K_GRAVITY 1
+#define MOTUS__K_LINEAR_DRAG 2
+#define MOTUS__K_DAMPING 4
+#define MOTUS__K_MASS 8
+#define MOTUS__K_FORCES 16
+#define MOTUS__K_GENERAL 32
+
+/* Lane masks from a flag that is the same for every lane: all ones or all zeros. */
+MOTUS__INLINE motus__mask motus__mask_if(int flag) {
+    return motus__splat(flag ? MOTUS_R(1.0) : MOTUS_R(0.0)) != motus__splat(0);
+}
+
+/* n <= MOTUS__LANES particles starting at index i. dims and flags are constants where this is inlined:
+   the compiler drops every term, load and store the scene does not have. Returns the lanes' sum of the new
+   state, which is NaN or infinite if any new value is. */
+MOTUS__INLINE motus__lane motus__batch_lanes(const motus_batch *b, int i, int n, const motus__kernel_constants *k,
+                                             const int dims, const int flags) {
+    motus__lane x[3], v[3], a[3], inverse_mass, check = motus__splat(0);
+    const motus__lane h = motus__splat(k->h), zero = motus__splat(0);
+    int d;
+    inverse_mass = (flags & MOTUS__K_MASS) ? motus__load(b->inverse_mass + i, n) : motus__splat(k->inverse_mass);
+    for (d = 0; d < dims; ++d) {
+        x[d] = motus__load(b->position[d] + i, n);
+        v[d] = motus__load(b->velocity[d] + i, n);
+        a[d] = (flags & MOTUS__K_FORCES) ? motus__load(b->force[d] + i, n) * inverse_mass : zero;
+        if (flags & MOTUS__K_GRAVITY) a[d] = a[d] + motus__splat(k->gravity[d]);
+        if (flags & MOTUS__K_LINEAR_DRAG) a[d] = a[d] - v[d] * motus__splat(k->linear_drag);
+    }
+    if (flags & MOTUS__K_GENERAL) {
+        /* Terms the scene lacks are selected away rather than multiplied by 0, which would turn an
+           infinite intermediate into NaN. */
+        motus__lane speed = v[0] * v[0] + v[1] * v[1], r[3], r2, drag, pull;
+        if (dims == 3) speed = speed + v[2] * v[2];
+        drag = motus__select(motus__mask_if(k->quadratic_drag != 0),
+                             motus__splat(k->quadratic_drag) * motus__sqrt(speed), zero);
+        for (d = 0; d < dims; ++d) a[d] = a[d] - v[d] * drag;
+        for (d = 0; d < dims; ++d) r[d] = x[d] - motus__splat(k->attractor[d]);
+        r2 = r[0] * r[0] + r[1] * r[1];
+        if (dims == 3) r2 = r2 + r[2] * r[2];
+        /* mu/(r2*sqrt(r2)) where r2 > 0, else no pull (that lane's division by zero is discarded) */
+        pull = motus__select((r2 > zero) & motus__mask_if(k->attractor_strength != 0),
+                             motus__splat(k->attractor_strength) / (r2 * motus__sqrt(r2)), zero);
+        for (d = 0; d < dims; ++d) a[d] = motus__select(motus__mask_if(k->attractor_strength != 0), a[d] - r[d] * pull, a[d]);
+    }
+    if (flags & MOTUS__K_MASS) { /* immovable particles: no acceleration (a NaN passes on) */
+        motus__lane movable = motus__select(inverse_mass != zero, motus__splat(1), zero);
+        for (d = 0; d < dims; ++d) a[d] = a[d] * movable;
+    }
+    for (d = 0; d < dims; ++d) {
+        motus__lane old_velocity = v[d];
+        v[d] = v[d] + a[d] * h;
+        if (flags & MOTUS__K_GENERAL) /* explicit Euler moves with the old velocity */
+            x[d] = x[d] + motus__select(motus__mask_if(k->semi_implicit), v[d], old_velocity) * h;
+        else
+            x[d] = x[d] + v[d] * h;
+        if (flags & MOTUS__K_DAMPING) v[d] = v[d] * motus__splat(k->damping);
+        if (flags & MOTUS__K_GENERAL) { /* bounds: mirror back inside, bounce with restitution */
+            motus__lane lo = motus__splat(k->bounds_min[d]), hi = motus__splat(k->bounds_max[d]);
+            motus__lane bounce = motus__splat(-k->restitution);
+            motus__mask below = x[d] < lo, above;
+            x[d] = motus__select(below, lo + (lo - x[d]), x[d]);
+            v[d] = motus__select(below, v[d] * bounce, v[d]);
+            above = x[d] > hi;
+            x[d] = motus__select(above, hi - (x[d] - hi), x[d]);
+            v[d] = motus__select(above, v[d] * bounce, v[d]);
+        }
+        motus__store(b->position[d] + i, x[d], n);
+        motus__store(b->velocity[d] + i, v[d], n);
+        check = check + (x[d] + v[d]);
+    }
+    return check;
+}
+
+/* The range in whole vectors, then one partial vector for the rest. Returns nonzero if the sum of the new
+   state is not finite (then motus__batch_state_broken looks closer). */
+MOTUS__INLINE int motus__batch_range(const motus_batch *b, int first, int count, const motus__kernel_constants *k,
+                                     const int dims, const int flags) {
+    motus__lane check = motus__splat(0);
+    motus_real sum = 0;
+    int i = first, end = first + count, lane;
+    for (; i + MOTUS__LANES <= end; i += MOTUS__LANES) check = check + motus__batch_lanes(b, i, MOTUS__LANES, k, dims, flags);
+    if (i < end) check = check + motus__batch_lanes(b, i, end - i, k, dims, flags);
+#if MOTUS__VECTOR
+    for (lane = 0; lane < MOTUS__LANES; ++lane) sum += check[lane];
+#else
+    (void)lane;
+    sum = check;
+#endif
+    return !motus_real_is_finite(sum);
+}
+
+#define MOTUS__KERNEL_CASE(dims, flags)                                                                          \
+    case (flags): return motus__batch_range(b, first, count, k, dims, flags);
+#define MOTUS__KERNEL_CASES_8(dims, base)                                                                        \
+    MOTUS__KERNEL_CASE(dims, (base) + 0) MOTUS__KERNEL_CASE(dims, (base) + 1) MOTUS__KERNEL_CASE(dims, (base) + 2)  \
+    MOTUS__KERNEL_CASE(dims, (base) + 3) MOTUS__KERNEL_CASE(dims, (base) + 4) MOTUS__KERNEL_CASE(dims, (base) + 5)  \
+    MOTUS__KERNEL_CASE(dims, (base) + 6) MOTUS__KERNEL_CASE(dims, (base) + 7)
+#define MOTUS__GENERAL (MOTUS__K_GENERAL | MOTUS__K_GRAVITY | MOTUS__K_LINEAR_DRAG | MOTUS__K_DAMPING)
+/* One function per dimension count, each with its 36 kernels: the 32 fast ones and the general one for the
+   4 combinations of the two optional arrays. */
+#define MOTUS__KERNEL_DISPATCH(name, dims)                                                                       \
+    MOTUS_API int name(const motus_batch *b, int first, int count, const motus__kernel_constants *k, int flags) {  \
+        switch (flags) {                                                                                         \
+            MOTUS__KERNEL_CASES_8(dims, 0)                                                                       \
+            MOTUS__KERNEL_CASES_8(dims, 8)                                                                       \
+            MOTUS__KERNEL_CASES_8(dims, 16)                                                                      \
+            MOTUS__KERNEL_CASES_8(dims, 24)                                                                      \
+            MOTUS__KERNEL_CASE(dims, MOTUS__GENERAL)                                                             \
+            MOTUS__KERNEL_CASE(dims, MOTUS__GENERAL | MOTUS__K_MASS)                                             \
+            MOTUS__KERNEL_CASE(dims, MOTUS__GENERAL | MOTUS__K_FORCES)                                           \
+            MOTUS__KERNEL_CASE(dims, MOTUS__GENERAL | MOTUS__K_MASS | MOTUS__K_FORCES)                           \
+        default: return -1;                                                                                      \
+        }                                                                                                        \
+    }
+MOTUS__KERNEL_DISPATCH(motus__batch_dispatch2, 2)
+MOTUS__KERNEL_DISPATCH(motus__batch_dispatch3, 3)
+#undef MOTUS__KERNEL_DISPATCH
+#undef MOTUS__KERNEL_CASES_8
+#undef MOTUS__KERNEL_CASE
+
+MOTUS_API int motus__scene_damping_flags(unsigned has) {
+    return (int)(has & (MOTUS_HAS_DAMPING_PER_STEP | MOTUS_HAS_DAMPING_PER_SECOND));
+}
+
+/* Checks the scene against the batch: known features, a supported method, the arrays it needs, parameters
+   in range. O(1); run by every step. */
+MOTUS_API motus_result motus_scene_check(const motus_scene *scene, const motus_batch *batch) {
+    const unsigned has = scene ? scene->has : 0;
+    int d, dims;
+    if (!scene || !batch) return MOTUS_ERROR_NULL_POINTER;
+    dims = batch->dimensions;
+    if ((has & ~MOTUS__HAS_KNOWN) || (dims != 2 && dims != 3) ||
+        motus__scene_damping_flags(has) == (MOTUS_HAS_DAMPING_PER_STEP | MOTUS_HAS_DAMPING_PER_SECOND))
+        return MOTUS_ERROR_INVALID_SCENE;
+    if (scene->method != MOTUS_SEMI_IMPLICIT_EULER && scene->method != MOTUS_EXPLICIT_EULER)
+        return MOTUS_ERROR_UNSUPPORTED;
+    for (d = 0; d < dims; ++d) {
+        if (!batch->position[d] || !batch->velocity[d]) return MOTUS_ERROR_NULL_POINTER;
+        if ((has & MOTUS_HAS_FORCES) && !batch->force[d]) return MOTUS_ERROR_NULL_POINTER;
+        if ((has & MOTUS_HAS_GRAVITY) && !motus_real_is_finite(scene->gravity[d])) return MOTUS_ERROR_NOT_FINITE;
+        if ((has & MOTUS_HAS_ATTRACTOR) && !motus_real_is_finite(scene->attractor[d])) return MOTUS_ERROR_NOT_FINITE;
+        if (has & MOTUS_HAS_BOUNDS) {
+            if (!motus_real_is_finite(scene->bounds_min[d]) || !motus_real_is_finite(scene->bounds_max[d]))
+                return MOTUS_ERROR_NOT_FINITE;
+            if (!(scene->bounds_min[d] <= scene->bounds_max[d])) return MOTUS_ERROR_INVALID_SCENE;
+        }
+    }
+    if ((has & MOTUS_HAS_PARTICLE_MASS) && !batch->inverse_mass) return MOTUS_ERROR_NULL_POINTER;
+    if (!(has & MOTUS_HAS_PARTICLE_MASS)) {
+        if (!motus_real_is_finite(scene->inverse_mass)) return MOTUS_ERROR_NOT_FINITE;
+        if (scene->inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
+    }
+    if (((has & MOTUS_HAS_LINEAR_DRAG) && !motus_real_is_finite(scene->linear_drag)) ||
+        ((has & MOTUS_HAS_QUADRATIC_DRAG) && !motus_real_is_finite(scene->quadratic_drag)) ||
+        ((has & MOTUS_HAS_ATTRACTOR) && !motus_real_is_finite(scene->attractor_strength)))
+        return MOTUS_ERROR_NOT_FINITE;
+    if (((has & MOTUS_HAS_LINEAR_DRAG) && scene->linear_drag < 0) ||
+        ((has & MOTUS_HAS_QUADRATIC_DRAG) && scene->quadratic_drag < 0) ||
+        ((has & MOTUS_HAS_ATTRACTOR) && scene->attractor_strength < 0))
+        return MOTUS_ERROR_INVALID_FORCES;
+    if (motus__scene_damping_flags(has) && !motus__damping_is_valid(scene->damping)) return MOTUS_ERROR_INVALID_DAMPING;
+    if ((has & MOTUS_HAS_BOUNDS) && !motus__damping_is_valid(scene->restitution)) return MOTUS_ERROR_INVALID_DAMPING;
+    return MOTUS_OK;
+}
+
+/* The first particle in [first, first + count) with a NaN or Inf in a field the scene uses, or a negative
+   inverse mass: MOTUS_OK, or the result with *bad_index and *bad_field ("position", "velocity", "force",
+   "inverse_mass") set. Either output pointer may be NULL. Reads the range once. */
+MOTUS_API motus_result motus_batch_check(const motus_scene *scene, const motus_batch *batch, int first, int count,
+                                         int *bad_index, const char **bad_field) {
+    motus_result result = motus_scene_check(scene, batch);
+    int i, d;
+    if (result != MOTUS_OK) return result;
+    if (first < 0 || count < 0 || count > INT_MAX - first) return MOTUS_ERROR_INVALID_COUNT;
+    for (i = first; i < first + count; ++i) {
+        const char *field = NULL;
+        if ((scene->has & MOTUS_HAS_PARTICLE_MASS) && !motus_real_is_finite(batch->inverse_mass[i])) field = "inverse_mass";
+        for (d = 0; d < batch->dimensions && !field; ++d) {
+            if (!motus_real_is_finite(batch->position[d][i])) field = "position";
+            else if (!motus_real_is_finite(batch->velocity[d][i])) field = "velocity";
+            else if ((scene->has & MOTUS_HAS_FORCES) && !motus_real_is_finite(batch->force[d][i])) field = "force";
+        }
+        result = field ? MOTUS_ERROR_NOT_FINITE : MOTUS_OK;
+        if (!field && (scene->has & MOTUS_HAS_PARTICLE_MASS) && batch->inverse_mass[i] < 0) {
+            field = "inverse_mass";
+            result = MOTUS_ERROR_INVALID_MASS;
+        }
+        if (field) {
+            if (bad_index) *bad_index = i;
+            if (bad_field) *bad_field = field;
+            return result;
+        }
+    }
+    return MOTUS_OK;
+}
+
+/* Steps particles [first, first + count) of `batch` by dt through `scene` (see the top of this section).
+   Thread-safe for ranges that do not overlap. Release builds: on MOTUS_ERROR_NOT_FINITE the range was
+   written (the data had NaN/Inf, or overflowed); with MOTUS_CHECKED, bad data is found first and nothing is
+   written. Every other error is found before anything is written. */
+MOTUS_API motus_result motus_batch_step(const motus_scene *scene, const motus_batch *batch, int first, int count,
+                                        motus_real dt) {
+    motus__kernel_constants k;
+    motus_result result = motus_scene_check(scene, batch);
+    const unsigned has = scene ? scene->has : 0;
+    int flags = 0, d, broken;
+    if (result != MOTUS_OK) return result;
+    if (first < 0 || count < 0 || count > INT_MAX - first) return MOTUS_ERROR_INVALID_COUNT;
+    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+#ifdef MOTUS_CHECKED
+    result = motus_batch_check(scene, batch, first, count, NULL, NULL);
+    if (result != MOTUS_OK) return result;
+#endif
+    if (count == 0) return MOTUS_OK;
+
+    /* Neutral values for what the scene lacks: the general kernel computes every term. */
+    k.h = dt;
+    k.linear_drag = k.quadratic_drag = k.attractor_strength = k.restitution = 0;
+    k.damping = 1;
+    k.semi_implicit = scene->method == MOTUS_SEMI_IMPLICIT_EULER;
+    k.inverse_mass = (has & MOTUS_HAS_PARTICLE_MASS) ? 0 : scene->inverse_mass;
+    for (d = 0; d < 3; ++d) {
+        k.gravity[d] = k.attractor[d] = 0;
+        k.bounds_min[d] = -(motus_real)HUGE_VAL;
+        k.bounds_max[d] = (motus_real)HUGE_VAL;
+    }
+    /* A uniform inverse mass of 0: nothing accelerates anything, as in motus_stepper_step. */
+    if ((has & MOTUS_HAS_PARTICLE_MASS) || scene->inverse_mass != 0) {
+        if (has & MOTUS_HAS_GRAVITY)
+            for (d = 0; d < batch->dimensions; ++d) k.gravity[d] = scene->gravity[d];
+        if (has & MOTUS_HAS_LINEAR_DRAG) k.linear_drag = scene->linear_drag;
+        if (has & MOTUS_HAS_QUADRATIC_DRAG) k.quadratic_drag = scene->quadratic_drag;
+        if (has & MOTUS_HAS_ATTRACTOR) {
+            for (d = 0; d < batch->dimensions; ++d) k.attractor[d] = scene->attractor[d];
+            k.attractor_strength = scene->attractor_strength;
+        }
+    }
+    if (has & MOTUS_HAS_DAMPING_PER_STEP) k.damping = scene->damping;
+    if (has & MOTUS_HAS_DAMPING_PER_SECOND) k.damping = MOTUS_POW(scene->damping, dt); /* as damp_per_second */
+    if (has & MOTUS_HAS_BOUNDS) {
+        for (d = 0; d < batch->dimensions; ++d) {
+            k.bounds_min[d] = scene->bounds_min[d];
+            k.bounds_max[d] = scene->bounds_max[d];
+        }
+        k.restitution = scene->restitution;
+    }
+
+    if (has & MOTUS_HAS_GRAVITY) flags |= MOTUS__K_GRAVITY;
+    if (has & MOTUS_HAS_LINEAR_DRAG) flags |= MOTUS__K_LINEAR_DRAG;
+    if (motus__scene_damping_flags(has)) flags |= MOTUS__K_DAMPING;
+    if (has & MOTUS_HAS_PARTICLE_MASS) flags |= MOTUS__K_MASS;
+    if (has & MOTUS_HAS_FORCES) flags |= MOTUS__K_FORCES;
+    if ((has & (MOTUS_HAS_QUADRATIC_DRAG | MOTUS_HAS_ATTRACTOR | MOTUS_HAS_BOUNDS)) || !k.semi_implicit)
+        flags |= MOTUS__GENERAL;
+
+    broken = batch->dimensions == 2 ? motus__batch_dispatch2(batch, first, count, &k, flags)
+                                    : motus__batch_dispatch3(batch, first, count, &k, flags);
+    if (broken < 0) return MOTUS_ERROR_UNSUPPORTED; /* cannot happen: every flag combination has a kernel */
+    if (broken) { /* the sum overflowed or a value is not finite: look at each one */
+        int i;
+        for (i = first; i < first + count; ++i)
+            for (d = 0; d < batch->dimensions; ++d)
+                if (!motus_real_is_finite(batch->position[d][i]) || !motus_real_is_finite(batch->velocity[d][i]))
+                    return MOTUS_ERROR_NOT_FINITE;
+    }
+    return MOTUS_OK;
+}
+
+/* Adds the forces of `springs` (see motus_spring) to the force arrays of a 2D batch of `count` particles,
+   as motus_stepper_step sums them; call it once per step for the whole batch, before stepping its ranges. */
+MOTUS_API motus_result motus_batch_add_spring_forces(const motus_batch *batch, int count, const motus_spring *springs,
+                                                     int spring_count) {
+    motus_forces model = {{0, 0}, 0, 0, 0, {0, 0}, NULL, 0, NULL, NULL};
+    motus_result result;
+    int i;
+    if (!batch) return MOTUS_ERROR_NULL_POINTER;
+    if (batch->dimensions != 2) return MOTUS_ERROR_UNSUPPORTED;
+    if (spring_count > 0 && (!batch->position[0] || !batch->position[1] || !batch->velocity[0] ||
+                             !batch->velocity[1] || !batch->force[0] || !batch->force[1]))
+        return MOTUS_ERROR_NULL_POINTER;
+    model.springs = springs;
+    model.spring_count = spring_count;
+    result = motus_forces_check(&model, count);
+    if (result != MOTUS_OK) return result;
+    for (i = 0; i < spring_count; ++i) {
+        const motus_spring *s = &springs[i];
+        const int a = s->a, b = s->b, anchored = b < 0;
+        motus_vec2 xa = motus_v2(batch->position[0][a], batch->position[1][a]);
+        motus_vec2 va = motus_v2(batch->velocity[0][a], batch->velocity[1][a]);
+        motus_vec2 d = motus_vec2_sub(xa, anchored ? s->anchor : motus_v2(batch->position[0][b], batch->position[1][b]));
+        motus_vec2 relative = anchored ? va : motus_vec2_sub(va, motus_v2(batch->velocity[0][b], batch->velocity[1][b]));
+        motus_vec2 f = motus__spring_force(s, d, relative);
+        batch->force[0][a] += f.x;
+        batch->force[1][a] += f.y;
+        if (!anchored) {
+            batch->force[0][b] -= f.x;
+            batch->force[1][b] -= f.y;
+        }
+    }
+    return MOTUS_OK;
+}
+
+/* =================================================================================================
    Validation and messages
    ================================================================================================= */
 MOTUS_API const char *motus_result_string(motus_result result) {
@@ -969,6 +1457,8 @@ MOTUS_API const char *motus_result_string(motus_result result) {
     case MOTUS_ERROR_INVALID_FORCES:
         return "force model out of range: drags and attractor strength >= 0, spring indices valid, all finite";
     case MOTUS_ERROR_SCRATCH_TOO_SMALL: return "stepper memory too small: see motus_stepper_scratch_size()";
+    case MOTUS_ERROR_INVALID_SCENE:
+        return "scene invalid: unknown MOTUS_HAS_* bit, both dampings, dimensions not 2 or 3, or bounds min > max";
     case MOTUS_ERROR_UNSUPPORTED:
         return "this method cannot integrate these forces (the exact stepper takes gravity and linear drag only)";
     case MOTUS_RESULT_COUNT: break;
