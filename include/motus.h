@@ -1068,6 +1068,9 @@ typedef int64_t motus__mask __attribute__((vector_size(MOTUS_SIMD_BYTES)));
 typedef int32_t motus__mask __attribute__((vector_size(MOTUS_SIMD_BYTES)));
 #endif
 typedef motus_real motus__lane __attribute__((vector_size(MOTUS_SIMD_BYTES)));
+/* The same, for loads and stores at any motus_real boundary; a vector of motus_real may alias the
+   motus_real arrays it is read from (memcpy would alias everything and force pointer reloads). */
+typedef motus_real motus__lane_unaligned __attribute__((vector_size(MOTUS_SIMD_BYTES), aligned(sizeof(motus_real))));
 #define MOTUS__LANES ((int)(MOTUS_SIMD_BYTES / sizeof(motus_real)))
 #else
 #define MOTUS__VECTOR 0
@@ -1078,10 +1081,8 @@ typedef motus_real motus__lane;
 
 MOTUS__INLINE motus__lane motus__splat(motus_real value) {
 #if MOTUS__VECTOR
-    motus__lane lanes;
-    int i;
-    for (i = 0; i < MOTUS__LANES; ++i) lanes[i] = value;
-    return lanes;
+    const motus__lane zero = {0};
+    return value - zero; /* a broadcast; v - (+0) is v exactly, signed zeros included */
 #else
     return value;
 #endif
@@ -1090,8 +1091,9 @@ MOTUS__INLINE motus__lane motus__splat(motus_real value) {
 MOTUS__INLINE motus__lane motus__load(const motus_real *from, int n) {
 #if MOTUS__VECTOR
     motus__lane lanes = motus__splat(0);
-    if (n == MOTUS__LANES) __builtin_memcpy(&lanes, from, sizeof lanes);
-    else __builtin_memcpy(&lanes, from, (size_t)n * sizeof(motus_real));
+    int i;
+    if (n == MOTUS__LANES) return *(const motus__lane_unaligned *)from;
+    for (i = 0; i < n; ++i) lanes[i] = from[i];
     return lanes;
 #else
     (void)n;
@@ -1100,8 +1102,12 @@ MOTUS__INLINE motus__lane motus__load(const motus_real *from, int n) {
 }
 MOTUS__INLINE void motus__store(motus_real *to, motus__lane lanes, int n) {
 #if MOTUS__VECTOR
-    if (n == MOTUS__LANES) __builtin_memcpy(to, &lanes, sizeof lanes);
-    else __builtin_memcpy(to, &lanes, (size_t)n * sizeof(motus_real));
+    int i;
+    if (n == MOTUS__LANES) {
+        *(motus__lane_unaligned *)to = lanes;
+        return;
+    }
+    for (i = 0; i < n; ++i) to[i] = lanes[i];
 #else
     (void)n;
     *to = lanes;
@@ -1146,86 +1152,136 @@ typedef struct motus__kernel_constants {
 #define MOTUS__K_FORCES 16
 #define MOTUS__K_GENERAL 32
 
+/* The constants as lanes, made once per call so that the loop does not redo them (nor reload them: the
+   arrays it stores to could alias a motus_real in memory, but not these locals). */
+typedef struct motus__kernel_lanes {
+    motus__lane h, gravity[3], linear_drag, quadratic_drag, damping, inverse_mass;
+    motus__lane attractor[3], attractor_strength, bounds_min[3], bounds_max[3], bounce;
+    motus__mask semi_implicit, has_quadratic_drag, has_attractor;
+} motus__kernel_lanes;
+
 /* Lane masks from a flag that is the same for every lane: all ones or all zeros. */
 MOTUS__INLINE motus__mask motus__mask_if(int flag) {
     return motus__splat(flag ? MOTUS_R(1.0) : MOTUS_R(0.0)) != motus__splat(0);
 }
 
+/* The statements once per dimension with d a constant (the third only in 3D), so that x[d], v[d], a[d]
+   become registers rather than arrays on the stack. */
+#define MOTUS__EACH_DIM(...)                                                                                     \
+    do {                                                                                                       \
+        { const int d = 0; __VA_ARGS__ }                                                                       \
+        { const int d = 1; __VA_ARGS__ }                                                                       \
+        if (dims == 3) { const int d = 2; __VA_ARGS__ }                                                        \
+    } while (0)
+
+/* The arrays of a batch, copied into locals for the loop. */
+typedef struct motus__arrays {
+    motus_real *position[3], *velocity[3], *force[3], *inverse_mass;
+} motus__arrays;
+
 /* n <= MOTUS__LANES particles starting at index i. dims and flags are constants where this is inlined:
-   the compiler drops every term, load and store the scene does not have. Returns the lanes' sum of the new
-   state, which is NaN or infinite if any new value is. */
-MOTUS__INLINE motus__lane motus__batch_lanes(const motus_batch *b, int i, int n, const motus__kernel_constants *k,
-                                             const int dims, const int flags) {
-    motus__lane x[3], v[3], a[3], inverse_mass, check = motus__splat(0);
-    const motus__lane h = motus__splat(k->h), zero = motus__splat(0);
-    int d;
-    inverse_mass = (flags & MOTUS__K_MASS) ? motus__load(b->inverse_mass + i, n) : motus__splat(k->inverse_mass);
-    for (d = 0; d < dims; ++d) {
+   the compiler drops every term, load and store the scene does not have. Adds the new positions to
+   check[]: a sum that is NaN or infinite if any new value is (a non-finite velocity always makes its
+   position non-finite too), one sum per dimension so that the additions do not wait on each other. */
+MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, int n, const motus__kernel_lanes *k,
+                                      const int dims, const int flags, motus__lane *check) {
+    motus__lane x[3], v[3], a[3], inverse_mass;
+    const motus__lane h = k->h, zero = motus__splat(0);
+    inverse_mass = (flags & MOTUS__K_MASS) ? motus__load(b->inverse_mass + i, n) : k->inverse_mass;
+    MOTUS__EACH_DIM(
         x[d] = motus__load(b->position[d] + i, n);
         v[d] = motus__load(b->velocity[d] + i, n);
         a[d] = (flags & MOTUS__K_FORCES) ? motus__load(b->force[d] + i, n) * inverse_mass : zero;
-        if (flags & MOTUS__K_GRAVITY) a[d] = a[d] + motus__splat(k->gravity[d]);
-        if (flags & MOTUS__K_LINEAR_DRAG) a[d] = a[d] - v[d] * motus__splat(k->linear_drag);
-    }
+        if (flags & MOTUS__K_GRAVITY) a[d] = a[d] + k->gravity[d];
+        if (flags & MOTUS__K_LINEAR_DRAG) a[d] = a[d] - v[d] * k->linear_drag;
+    );
     if (flags & MOTUS__K_GENERAL) {
         /* Terms the scene lacks are selected away rather than multiplied by 0, which would turn an
            infinite intermediate into NaN. */
         motus__lane speed = v[0] * v[0] + v[1] * v[1], r[3], r2, drag, pull;
         if (dims == 3) speed = speed + v[2] * v[2];
-        drag = motus__select(motus__mask_if(k->quadratic_drag != 0),
-                             motus__splat(k->quadratic_drag) * motus__sqrt(speed), zero);
-        for (d = 0; d < dims; ++d) a[d] = a[d] - v[d] * drag;
-        for (d = 0; d < dims; ++d) r[d] = x[d] - motus__splat(k->attractor[d]);
+        drag = motus__select(k->has_quadratic_drag, k->quadratic_drag * motus__sqrt(speed), zero);
+        MOTUS__EACH_DIM(a[d] = a[d] - v[d] * drag; r[d] = x[d] - k->attractor[d];);
         r2 = r[0] * r[0] + r[1] * r[1];
         if (dims == 3) r2 = r2 + r[2] * r[2];
         /* mu/(r2*sqrt(r2)) where r2 > 0, else no pull (that lane's division by zero is discarded) */
-        pull = motus__select((r2 > zero) & motus__mask_if(k->attractor_strength != 0),
-                             motus__splat(k->attractor_strength) / (r2 * motus__sqrt(r2)), zero);
-        for (d = 0; d < dims; ++d) a[d] = motus__select(motus__mask_if(k->attractor_strength != 0), a[d] - r[d] * pull, a[d]);
+        pull = motus__select((r2 > zero) & k->has_attractor, k->attractor_strength / (r2 * motus__sqrt(r2)), zero);
+        MOTUS__EACH_DIM(a[d] = motus__select(k->has_attractor, a[d] - r[d] * pull, a[d]););
     }
     if (flags & MOTUS__K_MASS) { /* immovable particles: no acceleration (a NaN passes on) */
         motus__lane movable = motus__select(inverse_mass != zero, motus__splat(1), zero);
-        for (d = 0; d < dims; ++d) a[d] = a[d] * movable;
+        MOTUS__EACH_DIM(a[d] = a[d] * movable;);
     }
-    for (d = 0; d < dims; ++d) {
+    MOTUS__EACH_DIM(
         motus__lane old_velocity = v[d];
         v[d] = v[d] + a[d] * h;
         if (flags & MOTUS__K_GENERAL) /* explicit Euler moves with the old velocity */
-            x[d] = x[d] + motus__select(motus__mask_if(k->semi_implicit), v[d], old_velocity) * h;
+            x[d] = x[d] + motus__select(k->semi_implicit, v[d], old_velocity) * h;
         else
             x[d] = x[d] + v[d] * h;
-        if (flags & MOTUS__K_DAMPING) v[d] = v[d] * motus__splat(k->damping);
+        if (flags & MOTUS__K_DAMPING) v[d] = v[d] * k->damping;
         if (flags & MOTUS__K_GENERAL) { /* bounds: mirror back inside, bounce with restitution */
-            motus__lane lo = motus__splat(k->bounds_min[d]), hi = motus__splat(k->bounds_max[d]);
-            motus__lane bounce = motus__splat(-k->restitution);
-            motus__mask below = x[d] < lo, above;
-            x[d] = motus__select(below, lo + (lo - x[d]), x[d]);
-            v[d] = motus__select(below, v[d] * bounce, v[d]);
-            above = x[d] > hi;
-            x[d] = motus__select(above, hi - (x[d] - hi), x[d]);
-            v[d] = motus__select(above, v[d] * bounce, v[d]);
+            motus__mask below = x[d] < k->bounds_min[d], above;
+            x[d] = motus__select(below, k->bounds_min[d] + (k->bounds_min[d] - x[d]), x[d]);
+            v[d] = motus__select(below, v[d] * k->bounce, v[d]);
+            above = x[d] > k->bounds_max[d];
+            x[d] = motus__select(above, k->bounds_max[d] - (x[d] - k->bounds_max[d]), x[d]);
+            v[d] = motus__select(above, v[d] * k->bounce, v[d]);
         }
         motus__store(b->position[d] + i, x[d], n);
         motus__store(b->velocity[d] + i, v[d], n);
-        check = check + (x[d] + v[d]);
-    }
-    return check;
+        check[d] = check[d] + x[d];
+    );
 }
 
 /* The range in whole vectors, then one partial vector for the rest. Returns nonzero if the sum of the new
    state is not finite (then motus__batch_state_broken looks closer). */
-MOTUS__INLINE int motus__batch_range(const motus_batch *b, int first, int count, const motus__kernel_constants *k,
+MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int count, const motus__kernel_constants *c,
                                      const int dims, const int flags) {
-    motus__lane check = motus__splat(0);
+    motus__kernel_lanes k;
+    motus__arrays arrays;
+    motus__lane check[3];
     motus_real sum = 0;
-    int i = first, end = first + count, lane;
-    for (; i + MOTUS__LANES <= end; i += MOTUS__LANES) check = check + motus__batch_lanes(b, i, MOTUS__LANES, k, dims, flags);
-    if (i < end) check = check + motus__batch_lanes(b, i, end - i, k, dims, flags);
+    int i = first, end = first + count, lane, d;
+    k.h = motus__splat(c->h);
+    k.linear_drag = motus__splat(c->linear_drag);
+    k.quadratic_drag = motus__splat(c->quadratic_drag);
+    k.damping = motus__splat(c->damping);
+    k.inverse_mass = motus__splat(c->inverse_mass);
+    k.attractor_strength = motus__splat(c->attractor_strength);
+    k.bounce = motus__splat(-c->restitution);
+    k.semi_implicit = motus__mask_if(c->semi_implicit);
+    k.has_quadratic_drag = motus__mask_if(c->quadratic_drag != 0);
+    k.has_attractor = motus__mask_if(c->attractor_strength != 0);
+    arrays.inverse_mass = batch->inverse_mass;
+    for (d = 0; d < 3; ++d) {
+        arrays.position[d] = batch->position[d];
+        arrays.velocity[d] = batch->velocity[d];
+        arrays.force[d] = batch->force[d];
+        k.gravity[d] = motus__splat(c->gravity[d]);
+        k.attractor[d] = motus__splat(c->attractor[d]);
+        k.bounds_min[d] = motus__splat(c->bounds_min[d]);
+        k.bounds_max[d] = motus__splat(c->bounds_max[d]);
+    }
+    check[0] = check[1] = check[2] = motus__splat(0);
 #if MOTUS__VECTOR
-    for (lane = 0; lane < MOTUS__LANES; ++lane) sum += check[lane];
+    { /* A partial vector first, so that the whole vectors that follow start on a vector boundary of the
+         first position array (stores that straddle cache lines cost up to twice as much). */
+        int head = (int)(((uintptr_t)0 - (uintptr_t)(arrays.position[0] + i)) % MOTUS_SIMD_BYTES / sizeof(motus_real));
+        if (head > 0 && head < end - i) {
+            motus__batch_lanes(&arrays, i, head, &k, dims, flags, check);
+            i += head;
+        }
+    }
+#endif
+    for (; i + MOTUS__LANES <= end; i += MOTUS__LANES) motus__batch_lanes(&arrays, i, MOTUS__LANES, &k, dims, flags, check);
+    if (i < end) motus__batch_lanes(&arrays, i, end - i, &k, dims, flags, check);
+    check[0] = check[0] + check[1] + check[2];
+#if MOTUS__VECTOR
+    for (lane = 0; lane < MOTUS__LANES; ++lane) sum += check[0][lane];
 #else
     (void)lane;
-    sum = check;
+    sum = check[0];
 #endif
     return !motus_real_is_finite(sum);
 }
