@@ -17,6 +17,13 @@
        motus_particle_damp_per_second(&ball, 0.55f, dt);     // keep 55% of the speed each second
        if (r != MOTUS_OK) fprintf(stderr, "motus: %s\n", motus_result_string(r));
 
+   Three ways to step, from the textbook to the fastest:
+   - motus_particle_step: one particle, semi-implicit Euler, the forces you added (the lines above);
+   - motus_stepper_step: an array of motus_particle under a force model (gravity, drags, springs, an
+     attractor, a callback) with any of nine integrators (see "Integrators");
+   - motus_batch_step: arrays of components (x[], y[], vx[], ...) stepped by a kernel compiled for exactly
+     the scene's features, vectorised, over a range a thread can own (see "Batch kernels").
+
    CONVENTIONS
    ===========
    - SI units: metres, seconds, kilograms, newtons. Nothing here cares what one unit is, so a game may use
@@ -24,7 +31,8 @@
    - The y axis points wherever you choose; motus never assumes "down". raylib's screen y grows downwards.
    - `motus_real` is float unless you define MOTUS_DOUBLE before including this header.
    - `motus_vec2` is two `motus_real`s, x then y, with no padding: in the float build it has the same layout as
-     raylib's `Vector2`, so arrays of either can be reinterpreted (tests/unit.c checks this at compile time).
+     raylib's `Vector2` (checked at compile time by the tests), so an array of either converts to the other
+     with one memcpy. Reading one through a pointer to the other would break C's aliasing rules.
    - A particle stores its inverse mass. Inverse mass 0 is an immovable particle: forces never move it.
    - Forces accumulate until you clear them. motus_particle_step does not clear them, so a force that is
      constant over many steps (gravity) may be added once; the reference program clears every frame.
@@ -41,6 +49,10 @@
    - MOTUS_SQRT, MOTUS_EXP, MOTUS_EXPM1, MOTUS_POW
                            (<math.h>: sqrtf/expf/expm1f/powf, or the double ones with MOTUS_DOUBLE)
                            Define all four or none: they go together, as stb does with its hooks.
+   - MOTUS_SIMD_BYTES      (64 with AVX-512, 32 with AVX, else 16)  vector width of the batch kernels.
+   - MOTUS_NO_SIMD         (undefined)      batch kernels one particle at a time (the results are the same).
+   - MOTUS_CHECKED         (undefined)      motus_batch_step checks every particle of its range before
+                                            writing anything (see "Batch kernels": release builds don't).
 
    DAMPING: PER STEP OR PER SECOND
    ===============================
