@@ -99,6 +99,7 @@
 #endif
 
 #if defined(MOTUS_SQRT) || defined(MOTUS_EXP) || defined(MOTUS_EXPM1) || defined(MOTUS_POW)
+#define MOTUS_SQRT_CUSTOM /* then the batch kernels call it too, lane by lane */
 #if !defined(MOTUS_SQRT) || !defined(MOTUS_EXP) || !defined(MOTUS_EXPM1) || !defined(MOTUS_POW)
 #error "motus.h: define all of MOTUS_SQRT, MOTUS_EXP, MOTUS_EXPM1 and MOTUS_POW, or none of them"
 #endif
@@ -325,7 +326,8 @@ MOTUS_API motus_result motus_particle_damp_per_second(motus_particle *particle, 
 }
 
 /* Keeps a particle inside the box [min, max]: past a wall its position is mirrored back inside and that
-   velocity component is multiplied by -restitution (in [0, 1]; 1 keeps all speed). The batch kernels'
+   velocity component is multiplied by -restitution (in [0, 1]; 1 keeps all speed); a particle that
+   overshot by more than the box is then clamped to the wall. The batch kernels'
    bounds do the same, in the same order (after the step and the damping). */
 MOTUS_API motus_result motus_particle_bounce(motus_particle *particle, motus_vec2 min, motus_vec2 max,
                                              motus_real restitution) {
@@ -349,6 +351,9 @@ MOTUS_API motus_result motus_particle_bounce(motus_particle *particle, motus_vec
             *position = hi[d] - (*position - hi[d]);
             *velocity = *velocity * -restitution;
         }
+        /* A particle that overshot by more than the box's width is still outside after one mirror. */
+        if (*position < lo[d]) *position = lo[d];
+        if (*position > hi[d]) *position = hi[d];
     }
     return MOTUS_OK;
 }
@@ -1005,9 +1010,9 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
 
    The scene says what it has (MOTUS_HAS_*); motus picks a kernel compiled for exactly that: arrays the
    scene does not have are never loaded (they may be NULL) and there is no per-particle test of a feature.
-   Gravity, linear drag, damping, per-particle mass and accumulated forces have a kernel for each of their
-   32 combinations; quadratic drag, an attractor, bounds or explicit Euler switch to one general kernel
-   that computes every term (the ones the scene lacks with neutral values). The particles are processed
+   Gravity, linear drag, damping, per-particle mass, accumulated forces and bounds have a kernel for each of
+   their 64 combinations; quadratic drag, an attractor or explicit Euler switch to one general kernel that
+   computes every term (the ones the scene lacks with neutral values). The particles are processed
    MOTUS_SIMD_BYTES at a time with the compiler's vector extensions (GCC, Clang), one at a time elsewhere;
    every lane does the same IEEE operations in the same order as motus_stepper_step followed by
    motus_particle_damp_per_step / _per_second and motus_particle_bounce, so the two agree bit for bit
@@ -1017,7 +1022,7 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
        a = F*inverse_mass + gravity - k*v - c*|v|*v - mu*r/|r|^3     (r from the attractor)
        v += a*h;  x += v*h           (semi-implicit Euler; explicit Euler moves x with the old v)
        v *= damping                  (per step), or damping^h (per second)
-       bounds: past a wall, x is mirrored back inside and v *= -restitution
+       bounds: past a wall, x is mirrored back and v *= -restitution; then x is clamped into the box
    Springs couple particles, so they are not part of the per-range step: motus_batch_add_spring_forces
    adds their forces to the force arrays for the whole batch first (2D).
 
@@ -1084,6 +1089,32 @@ typedef motus_real motus__lane __attribute__((vector_size(MOTUS_SIMD_BYTES)));
    motus_real arrays it is read from (memcpy would alias everything and force pointer reloads). */
 typedef motus_real motus__lane_unaligned __attribute__((vector_size(MOTUS_SIMD_BYTES), aligned(sizeof(motus_real))));
 #define MOTUS__LANES ((int)(MOTUS_SIMD_BYTES / sizeof(motus_real)))
+#if defined(__SSE2__) && !defined(MOTUS_SQRT_CUSTOM) && (MOTUS_SIMD_BYTES == 16 || (MOTUS_SIMD_BYTES == 32 && defined(__AVX__)) || (MOTUS_SIMD_BYTES == 64 && defined(__AVX512F__)))
+#include <immintrin.h>
+#ifdef MOTUS_DOUBLE
+#if MOTUS_SIMD_BYTES == 16
+#define MOTUS__X86_SQRT _mm_sqrt_pd
+#define MOTUS__X86_VECTOR __m128d
+#elif MOTUS_SIMD_BYTES == 32
+#define MOTUS__X86_SQRT _mm256_sqrt_pd
+#define MOTUS__X86_VECTOR __m256d
+#else /* maskz: gcc 12's plain _mm512_sqrt_pd trips -Wmaybe-uninitialized in its own header */
+#define MOTUS__X86_SQRT(x) _mm512_maskz_sqrt_pd((__mmask8)0xFF, x)
+#define MOTUS__X86_VECTOR __m512d
+#endif
+#else
+#if MOTUS_SIMD_BYTES == 16
+#define MOTUS__X86_SQRT _mm_sqrt_ps
+#define MOTUS__X86_VECTOR __m128
+#elif MOTUS_SIMD_BYTES == 32
+#define MOTUS__X86_SQRT _mm256_sqrt_ps
+#define MOTUS__X86_VECTOR __m256
+#else
+#define MOTUS__X86_SQRT(x) _mm512_maskz_sqrt_ps((__mmask16)0xFFFF, x)
+#define MOTUS__X86_VECTOR __m512
+#endif
+#endif
+#endif
 #else
 #define MOTUS__VECTOR 0
 typedef int motus__mask;
@@ -1126,7 +1157,11 @@ MOTUS__INLINE void motus__store(motus_real *to, motus__lane lanes, int n) {
 #endif
 }
 MOTUS__INLINE motus__lane motus__sqrt(motus__lane x) {
-#if MOTUS__VECTOR
+#if MOTUS__VECTOR && defined(MOTUS__X86_SQRT)
+    /* The hardware's vector square root: correctly rounded, like sqrtf/sqrt, so the lanes agree with the
+       scalar path bit for bit (a loop of sqrtf stays scalar while errno is on). */
+    return (motus__lane)MOTUS__X86_SQRT((MOTUS__X86_VECTOR)x);
+#elif MOTUS__VECTOR
     int i;
     for (i = 0; i < MOTUS__LANES; ++i) x[i] = MOTUS_SQRT(x[i]);
     return x;
@@ -1156,13 +1191,14 @@ typedef struct motus__kernel_constants {
     int semi_implicit;
 } motus__kernel_constants;
 
-/* Kernel flags: the first five choose among the 32 fast kernels; GENERAL adds every other term. */
+/* Kernel flags: the first six choose among the 64 fast kernels; GENERAL adds every other term. */
 #define MOTUS__K_GRAVITY 1
 #define MOTUS__K_LINEAR_DRAG 2
 #define MOTUS__K_DAMPING 4
 #define MOTUS__K_MASS 8
 #define MOTUS__K_FORCES 16
-#define MOTUS__K_GENERAL 32
+#define MOTUS__K_BOUNDS 32
+#define MOTUS__K_GENERAL 64
 
 /* The constants as lanes, made once per call so that the loop does not redo them (nor reload them: the
    arrays it stores to could alias a motus_real in memory, but not these locals). */
@@ -1191,12 +1227,13 @@ typedef struct motus__arrays {
     motus_real *position[3], *velocity[3], *force[3], *inverse_mass;
 } motus__arrays;
 
-/* n <= MOTUS__LANES particles starting at index i. dims and flags are constants where this is inlined:
+/* MOTUS__LANES particles starting at index i. dims and flags are constants where this is inlined:
    the compiler drops every term, load and store the scene does not have. Adds the new positions to
    check[]: a sum that is NaN or infinite if any new value is (a non-finite velocity always makes its
    position non-finite too), one sum per dimension so that the additions do not wait on each other. */
-MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, int n, const motus__kernel_lanes *k,
+MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus__kernel_lanes *k,
                                       const int dims, const int flags, motus__lane *check) {
+    const int n = MOTUS__LANES;
     motus__lane x[3], v[3], a[3], inverse_mass;
     const motus__lane h = k->h, zero = motus__splat(0);
     inverse_mass = (flags & MOTUS__K_MASS) ? motus__load(b->inverse_mass + i, n) : k->inverse_mass;
@@ -1232,13 +1269,15 @@ MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, int n, cons
         else
             x[d] = x[d] + v[d] * h;
         if (flags & MOTUS__K_DAMPING) v[d] = v[d] * k->damping;
-        if (flags & MOTUS__K_GENERAL) { /* bounds: mirror back inside, bounce with restitution */
+        if (flags & MOTUS__K_BOUNDS) { /* as motus_particle_bounce: mirror, bounce, then clamp */
             motus__mask below = x[d] < k->bounds_min[d], above;
             x[d] = motus__select(below, k->bounds_min[d] + (k->bounds_min[d] - x[d]), x[d]);
             v[d] = motus__select(below, v[d] * k->bounce, v[d]);
             above = x[d] > k->bounds_max[d];
             x[d] = motus__select(above, k->bounds_max[d] - (x[d] - k->bounds_max[d]), x[d]);
             v[d] = motus__select(above, v[d] * k->bounce, v[d]);
+            x[d] = motus__select(x[d] < k->bounds_min[d], k->bounds_min[d], x[d]);
+            x[d] = motus__select(x[d] > k->bounds_max[d], k->bounds_max[d], x[d]);
         }
         motus__store(b->position[d] + i, x[d], n);
         motus__store(b->velocity[d] + i, v[d], n);
@@ -1246,15 +1285,37 @@ MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, int n, cons
     );
 }
 
+/* n < MOTUS__LANES particles at index i of `arrays`, copied into the buffers of `partial` (zero padded) when
+   `in`, or back (positions and velocities) when not. */
+MOTUS_API void motus__partial_copy(const motus__arrays *arrays, int i, const motus__arrays *partial, int n, int dims,
+                                   int flags, int in) {
+    int j, d;
+    for (j = 0; j < MOTUS__LANES; ++j) {
+        const int inside = j < n;
+        for (d = 0; d < dims; ++d) {
+            if (in) {
+                partial->position[d][j] = inside ? arrays->position[d][i + j] : 0;
+                partial->velocity[d][j] = inside ? arrays->velocity[d][i + j] : 0;
+                if (flags & MOTUS__K_FORCES) partial->force[d][j] = inside ? arrays->force[d][i + j] : 0;
+            } else if (inside) {
+                arrays->position[d][i + j] = partial->position[d][j];
+                arrays->velocity[d][i + j] = partial->velocity[d][j];
+            }
+        }
+        if (in && (flags & MOTUS__K_MASS)) partial->inverse_mass[j] = inside ? arrays->inverse_mass[i + j] : 0;
+    }
+}
+
 /* The range in whole vectors, then one partial vector for the rest. Returns nonzero if the sum of the new
    state is not finite (then motus__batch_state_broken looks closer). */
 MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int count, const motus__kernel_constants *c,
                                      const int dims, const int flags) {
     motus__kernel_lanes k;
-    motus__arrays arrays;
+    motus__arrays arrays, partial;
+    motus_real buffer[10][MOTUS__LANES];
     motus__lane check[3];
     motus_real sum = 0;
-    int i = first, end = first + count, lane, d;
+    int i = first, end = first + count, lane, d, head;
     k.h = motus__splat(c->h);
     k.linear_drag = motus__splat(c->linear_drag);
     k.quadratic_drag = motus__splat(c->quadratic_drag);
@@ -1274,20 +1335,32 @@ MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int co
         k.attractor[d] = motus__splat(c->attractor[d]);
         k.bounds_min[d] = motus__splat(c->bounds_min[d]);
         k.bounds_max[d] = motus__splat(c->bounds_max[d]);
+        partial.position[d] = buffer[d];
+        partial.velocity[d] = buffer[3 + d];
+        partial.force[d] = buffer[6 + d];
     }
+    partial.inverse_mass = buffer[9];
     check[0] = check[1] = check[2] = motus__splat(0);
-#if MOTUS__VECTOR
-    { /* A partial vector first, so that the whole vectors that follow start on a vector boundary of the
-         first position array (stores that straddle cache lines cost up to twice as much). */
-        int head = (int)(((uintptr_t)0 - (uintptr_t)(arrays.position[0] + i)) % MOTUS_SIMD_BYTES / sizeof(motus_real));
-        if (head > 0 && head < end - i) {
-            motus__batch_lanes(&arrays, i, head, &k, dims, flags, check);
-            i += head;
+    /* One place where the kernel's body is inlined, for whole vectors in place and for the partial ones at
+       either end, which go through a zero-padded copy (each kernel's code then appears once, not three
+       times). The first partial vector makes the whole vectors start on a vector boundary of the first
+       position array: stores that straddle cache lines cost up to twice as much. */
+    head = MOTUS__VECTOR ? (int)(((uintptr_t)0 - (uintptr_t)(arrays.position[0] + i)) % MOTUS_SIMD_BYTES / sizeof(motus_real)) : 0;
+    while (i < end) {
+        int n = end - i < MOTUS__LANES ? end - i : MOTUS__LANES;
+        const motus__arrays *from = &arrays;
+        int at = i;
+        if (head > 0 && head < n) n = head;
+        head = 0;
+        if (n < MOTUS__LANES) { /* copy in: only the arrays this kernel reads */
+            motus__partial_copy(&arrays, i, &partial, n, dims, flags, 1);
+            from = &partial;
+            at = 0;
         }
+        motus__batch_lanes(from, at, &k, dims, flags, check);
+        if (n < MOTUS__LANES) motus__partial_copy(&arrays, i, &partial, n, dims, flags, 0);
+        i += n;
     }
-#endif
-    for (; i + MOTUS__LANES <= end; i += MOTUS__LANES) motus__batch_lanes(&arrays, i, MOTUS__LANES, &k, dims, flags, check);
-    if (i < end) motus__batch_lanes(&arrays, i, end - i, &k, dims, flags, check);
     check[0] = check[0] + check[1] + check[2];
 #if MOTUS__VECTOR
     for (lane = 0; lane < MOTUS__LANES; ++lane) sum += check[0][lane];
@@ -1304,8 +1377,8 @@ MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int co
     MOTUS__KERNEL_CASE(dims, (base) + 0) MOTUS__KERNEL_CASE(dims, (base) + 1) MOTUS__KERNEL_CASE(dims, (base) + 2)  \
     MOTUS__KERNEL_CASE(dims, (base) + 3) MOTUS__KERNEL_CASE(dims, (base) + 4) MOTUS__KERNEL_CASE(dims, (base) + 5)  \
     MOTUS__KERNEL_CASE(dims, (base) + 6) MOTUS__KERNEL_CASE(dims, (base) + 7)
-#define MOTUS__GENERAL (MOTUS__K_GENERAL | MOTUS__K_GRAVITY | MOTUS__K_LINEAR_DRAG | MOTUS__K_DAMPING)
-/* One function per dimension count, each with its 36 kernels: the 32 fast ones and the general one for the
+#define MOTUS__GENERAL (MOTUS__K_GENERAL | MOTUS__K_GRAVITY | MOTUS__K_LINEAR_DRAG | MOTUS__K_DAMPING | MOTUS__K_BOUNDS)
+/* One function per dimension count, each with its 68 kernels: the 64 fast ones and the general one for the
    4 combinations of the two optional arrays. */
 #define MOTUS__KERNEL_DISPATCH(name, dims)                                                                       \
     MOTUS_API int name(const motus_batch *b, int first, int count, const motus__kernel_constants *k, int flags) {  \
@@ -1314,6 +1387,10 @@ MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int co
             MOTUS__KERNEL_CASES_8(dims, 8)                                                                       \
             MOTUS__KERNEL_CASES_8(dims, 16)                                                                      \
             MOTUS__KERNEL_CASES_8(dims, 24)                                                                      \
+            MOTUS__KERNEL_CASES_8(dims, 32)                                                                      \
+            MOTUS__KERNEL_CASES_8(dims, 40)                                                                      \
+            MOTUS__KERNEL_CASES_8(dims, 48)                                                                      \
+            MOTUS__KERNEL_CASES_8(dims, 56)                                                                      \
             MOTUS__KERNEL_CASE(dims, MOTUS__GENERAL)                                                             \
             MOTUS__KERNEL_CASE(dims, MOTUS__GENERAL | MOTUS__K_MASS)                                             \
             MOTUS__KERNEL_CASE(dims, MOTUS__GENERAL | MOTUS__K_FORCES)                                           \
@@ -1459,8 +1536,8 @@ MOTUS_API motus_result motus_batch_step(const motus_scene *scene, const motus_ba
     if (motus__scene_damping_flags(has)) flags |= MOTUS__K_DAMPING;
     if (has & MOTUS_HAS_PARTICLE_MASS) flags |= MOTUS__K_MASS;
     if (has & MOTUS_HAS_FORCES) flags |= MOTUS__K_FORCES;
-    if ((has & (MOTUS_HAS_QUADRATIC_DRAG | MOTUS_HAS_ATTRACTOR | MOTUS_HAS_BOUNDS)) || !k.semi_implicit)
-        flags |= MOTUS__GENERAL;
+    if (has & MOTUS_HAS_BOUNDS) flags |= MOTUS__K_BOUNDS;
+    if ((has & (MOTUS_HAS_QUADRATIC_DRAG | MOTUS_HAS_ATTRACTOR)) || !k.semi_implicit) flags |= MOTUS__GENERAL;
 
     broken = batch->dimensions == 2 ? motus__batch_dispatch2(batch, first, count, &k, flags)
                                     : motus__batch_dispatch3(batch, first, count, &k, flags);
