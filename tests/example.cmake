@@ -26,6 +26,16 @@ if(TARGET orbits)
     set_tests_properties(example.orbits_${mode} PROPERTIES LABELS example RESOURCE_LOCK x_server TIMEOUT 120)
   endforeach()
 endif()
+# The sandbox example: headless runs with gravity and wind on and off, checked on their printed means and on
+# the screenshot's colours; and G, W, R, D held as real keys, each checked to flip its switch and scene.has.
+if(TARGET sandbox)
+  foreach(mode headless key_g key_w key_r key_d)
+    add_test(NAME example.sandbox_${mode}
+      COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/example_sandbox.sh" $<TARGET_FILE:sandbox> ${mode}
+              "${CMAKE_CURRENT_BINARY_DIR}/example")
+    set_tests_properties(example.sandbox_${mode} PROPERTIES LABELS example RESOURCE_LOCK x_server TIMEOUT 120)
+  endforeach()
+endif()
 
 # The headless run the demo makes: a fixed number of frames, scripted input, a screenshot, checked on pixels.
 find_path(MOTUS_STB_INCLUDE_DIR stb/stb_image.h)

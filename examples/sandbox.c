@@ -1,0 +1,470 @@
+/* sandbox.c - thousands of coloured particles stepped by motus's batch kernels, with gravity, wind and
+   damping you switch on and off.
+
+   The reference program's follow-up ideas ("add more particles and draw each with a different colour, and
+   let them move randomly"; "collisions at the edges of the screen"; "add gravity to let particles fall and
+   wind that blows particles to the side"), written with motus_batch_step: an 800x600 window at 60 FPS and
+   5000 particles (--particles N) in static arrays, one array per component (x[], y[], vx[], vy[], ...).
+   Each particle has its own colour, a mass between 0.5 and 2 (drawn as its size) and starts at a random
+   place with a random velocity; a small seeded generator of this file makes the start and the random kicks,
+   so a run with the same options is the same run. One unit of length is one pixel; y grows downwards.
+
+   Every frame the scene description (motus_scene.has) is rebuilt from what is switched on, and motus picks
+   its kernel from exactly that:
+     G  gravity, 300 px/s^2 down             MOTUS_HAS_GRAVITY (scene.gravity)
+     W  wind, a force of 200 N to the right   MOTUS_HAS_FORCES (the force arrays): a force, not an
+                                              acceleration, so light particles blow away faster than heavy
+                                              ones, while gravity pulls every one alike
+     R  random kicks, up to 400 N each way    MOTUS_HAS_FORCES too: a new random force every frame
+     D  damping, 50% of the speed kept per    MOTUS_HAS_DAMPING_PER_SECOND (scene.damping)
+        second
+   and always: each particle's own mass (MOTUS_HAS_PARTICLE_MASS) and the window's edges, where particles
+   bounce and keep 90% of their speed (MOTUS_HAS_BOUNDS, scene.restitution). With neither wind nor kicks the
+   force arrays are not filled and the kernel does not read them: each combination of these switches has
+   its own kernel in motus.h (see "Batch kernels"). The HUD lights the MOTUS_HAS_* flags that are on and shows the time the one
+   motus_batch_step call for all particles took each frame, measured here on this machine (a moving average;
+   a timing, not a property of motus; with few particles it is mostly the cost of a call made once a frame,
+   between drawings, with cold caches).
+
+   The step is a fixed dt = 1/60 s per frame, whatever the measured frame time: the motion depends on the
+   number of frames only, so a run under a virtual X server (Xvfb), slow or not, ends where a real one does.
+
+   Keys: G, W, R, D toggle (see above); Escape quits.
+   Options, so that a script can drive it without a person (defaults: the interactive program):
+     --frames N            stop after N frames (default: run until the window is closed or Escape)
+     --particles N         how many, 1 to 65536 (default 5000)
+     --seed N              the random generator's seed (default 1)
+     --gravity on|off      the toggles' first state (defaults: gravity off, wind off, random on, damping off)
+     --wind on|off
+     --random on|off
+     --damping on|off
+     --screenshot FILE     save the last frame as a PNG
+   On exit it prints one line: the scene it ended with, how many key presses toggled something, how many
+   particles are inside the window (all of them: they bounce) and their mean position and velocity, e.g.
+     frames=300 particles=5000 has=GRAVITY|PARTICLE_MASS|FORCES|BOUNDS gravity=1 wind=0 random=1 damping=0
+     toggles=0 inside=5000 mean_x=396.696 mean_y=484.959 mean_vx=0.612 mean_vy=13.280 us_per_step=40.523
+   (one line). us_per_step is a measurement; every other number is the same on every run with the same
+   options. */
+#include "motus.h"
+#include "raylib.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define WINDOW_WIDTH 800
+#define WINDOW_HEIGHT 600
+#define DT (1.0f / 60.0f)        /* s per frame, fixed */
+#define DEFAULT_PARTICLES 5000
+#define MAX_PARTICLES 65536
+#define GRAVITY 300.0f           /* px/s^2, down */
+#define WIND 200.0f              /* N to the right, on every particle */
+#define KICK 400.0f              /* N: each random kick's components are uniform in [-KICK, KICK] */
+#define DAMPING_PER_SECOND 0.5f  /* speed kept per second when damping is on */
+#define RESTITUTION 0.9f         /* speed kept through a bounce */
+#define MIN_MASS 0.5f
+#define MAX_MASS 2.0f
+#define MAX_SPEED 120.0f         /* px/s: each starting velocity component is uniform in [-MAX_SPEED, MAX_SPEED] */
+/* Radius 2.5 px at the lightest, 4.5 px at the heaviest; the walls sit a largest radius inside the window,
+   so that every dot is drawn whole and touches the edge where it bounces. */
+#define RADIUS_OF_MASS(m) (1.833f + 1.333f * (m))
+#define MAX_RADIUS RADIUS_OF_MASS(MAX_MASS)
+#define TIMING_SMOOTHING 0.05 /* weight of a new measurement in the moving average, after the first 20 */
+
+/* Layout: translucent bars over the particles. */
+#define TOP_BAR_HEIGHT 84
+#define FLAGS_TOP 48    /* the MOTUS_HAS_* grid: two rows of five columns */
+#define FLAG_ROW 18
+#define FLAG_LEFT 96
+#define FLAG_COLUMN 140
+#define FLAG_COLUMNS 5
+#define BOTTOM_BAR_HEIGHT 26
+#define BACKGROUND CLITERAL(Color){10, 10, 16, 255}
+#define PANEL CLITERAL(Color){22, 22, 32, 215}
+#define RULE CLITERAL(Color){58, 58, 74, 255}
+#define TEXT_DIM CLITERAL(Color){135, 135, 155, 255}
+#define TEXT_BRIGHT CLITERAL(Color){225, 225, 235, 255}
+#define LIT CLITERAL(Color){120, 235, 140, 255}
+#define LIT_BACK CLITERAL(Color){30, 72, 42, 255}
+
+/* Cache-line aligned: the kernels take any alignment (they peel to a vector boundary), this only spares
+   them the peel. GCC and Clang spelling; C99 has no _Alignas. */
+#if defined(__GNUC__) || defined(__clang__)
+#define ALIGNED64 __attribute__((aligned(64)))
+#else
+#define ALIGNED64
+#endif
+
+/* The particles: one array per component, as motus_batch wants them. */
+static float position_x[MAX_PARTICLES] ALIGNED64, position_y[MAX_PARTICLES] ALIGNED64;
+static float velocity_x[MAX_PARTICLES] ALIGNED64, velocity_y[MAX_PARTICLES] ALIGNED64;
+static float force_x[MAX_PARTICLES] ALIGNED64, force_y[MAX_PARTICLES] ALIGNED64;
+static float inverse_mass[MAX_PARTICLES] ALIGNED64;
+static float radius[MAX_PARTICLES];
+static Color colour[MAX_PARTICLES];
+
+typedef struct toggles {
+    int gravity, wind, random, damping;
+    long presses; /* key presses that toggled something */
+} toggles;
+
+typedef struct options {
+    long frames; /* 0: no limit */
+    int particles;
+    unsigned long seed;
+    toggles start;
+    const char *screenshot;
+} options;
+
+typedef struct sandbox {
+    int count;
+    toggles on;
+    motus_scene scene; /* rebuilt from `on` every frame */
+    motus_batch batch;
+    double us_per_step; /* moving average of the measured motus_batch_step time */
+    long steps_timed;
+    motus_result last_result;
+    unsigned long long random_state;
+    Texture2D dot; /* a white disc with a soft edge, tinted per particle */
+} sandbox;
+
+/* ---- a small random generator: PCG32 (O'Neill 2014), 64-bit LCG state, permuted 32-bit output ---- */
+static unsigned random_next(unsigned long long *state) {
+    unsigned long long old = *state;
+    unsigned xorshifted, rotation;
+    *state = old * 6364136223846793005ull + 1442695040888963407ull;
+    xorshifted = (unsigned)(((old >> 18) ^ old) >> 27);
+    rotation = (unsigned)(old >> 59);
+    return (xorshifted >> rotation) | (xorshifted << ((32u - rotation) & 31u));
+}
+/* Uniform in [lo, hi): the top 24 bits, which a float holds exactly. */
+static float random_range(unsigned long long *state, float lo, float hi) {
+    return lo + (hi - lo) * (float)(random_next(state) >> 8) * (1.0f / 16777216.0f);
+}
+static void random_seed(unsigned long long *state, unsigned long long seed) {
+    *state = 0;
+    random_next(state);
+    *state += seed;
+    random_next(state);
+}
+
+/* ---- options -------------------------------------------------------------------------------------- */
+static int parse_switch(const char *text, int *out) {
+    if (strcmp(text, "on") == 0) *out = 1;
+    else if (strcmp(text, "off") == 0) *out = 0;
+    else return 0;
+    return 1;
+}
+
+static int parse_options(int argc, char **argv, options *out) {
+    int i;
+    memset(out, 0, sizeof *out);
+    out->particles = DEFAULT_PARTICLES;
+    out->seed = 1;
+    out->start.random = 1;
+    for (i = 1; i < argc; ++i) {
+        const char *name = argv[i], *value = i + 1 < argc ? argv[i + 1] : NULL;
+        char *end;
+        if (!value) return 0;
+        ++i;
+        if (strcmp(name, "--frames") == 0) {
+            out->frames = strtol(value, &end, 10);
+            if (*end != '\0' || out->frames < 0) return 0;
+        } else if (strcmp(name, "--particles") == 0) {
+            long n = strtol(value, &end, 10);
+            if (*end != '\0' || n < 1 || n > MAX_PARTICLES) return 0;
+            out->particles = (int)n;
+        } else if (strcmp(name, "--seed") == 0) {
+            out->seed = strtoul(value, &end, 10);
+            if (*end != '\0') return 0;
+        } else if (strcmp(name, "--screenshot") == 0) {
+            out->screenshot = value;
+        } else if (!((strcmp(name, "--gravity") == 0 && parse_switch(value, &out->start.gravity)) ||
+                     (strcmp(name, "--wind") == 0 && parse_switch(value, &out->start.wind)) ||
+                     (strcmp(name, "--random") == 0 && parse_switch(value, &out->start.random)) ||
+                     (strcmp(name, "--damping") == 0 && parse_switch(value, &out->start.damping)))) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* ---- the simulation ------------------------------------------------------------------------------- */
+static void sandbox_init(sandbox *s, const options *opts) {
+    int i;
+    memset(s, 0, sizeof *s);
+    s->count = opts->particles;
+    s->on = opts->start;
+    s->on.presses = 0;
+    random_seed(&s->random_state, opts->seed);
+    for (i = 0; i < s->count; ++i) {
+        const float mass = random_range(&s->random_state, MIN_MASS, MAX_MASS);
+        position_x[i] = random_range(&s->random_state, MAX_RADIUS, WINDOW_WIDTH - MAX_RADIUS);
+        position_y[i] = random_range(&s->random_state, MAX_RADIUS, WINDOW_HEIGHT - MAX_RADIUS);
+        velocity_x[i] = random_range(&s->random_state, -MAX_SPEED, MAX_SPEED);
+        velocity_y[i] = random_range(&s->random_state, -MAX_SPEED, MAX_SPEED);
+        force_x[i] = force_y[i] = 0;
+        inverse_mass[i] = 1.0f / mass;
+        radius[i] = RADIUS_OF_MASS(mass);
+        colour[i] = ColorFromHSV(random_range(&s->random_state, 0, 360), random_range(&s->random_state, 0.55f, 0.9f),
+                                 1.0f);
+    }
+    s->batch.dimensions = 2;
+    s->batch.position[0] = position_x;
+    s->batch.position[1] = position_y;
+    s->batch.velocity[0] = velocity_x;
+    s->batch.velocity[1] = velocity_y;
+    s->batch.force[0] = force_x;
+    s->batch.force[1] = force_y;
+    s->batch.inverse_mass = inverse_mass;
+}
+
+/* The scene as the toggles say: every flag set is work that is on, every flag not set is work not done. */
+static motus_scene scene_from(const toggles *on) {
+    motus_scene scene;
+    memset(&scene, 0, sizeof scene); /* method 0: semi-implicit Euler */
+    scene.has = MOTUS_HAS_PARTICLE_MASS | MOTUS_HAS_BOUNDS;
+    if (on->gravity) {
+        scene.has |= MOTUS_HAS_GRAVITY;
+        scene.gravity[1] = GRAVITY;
+    }
+    if (on->wind || on->random) scene.has |= MOTUS_HAS_FORCES;
+    if (on->damping) {
+        scene.has |= MOTUS_HAS_DAMPING_PER_SECOND;
+        scene.damping = DAMPING_PER_SECOND;
+    }
+    scene.bounds_min[0] = scene.bounds_min[1] = MAX_RADIUS;
+    scene.bounds_max[0] = WINDOW_WIDTH - MAX_RADIUS;
+    scene.bounds_max[1] = WINDOW_HEIGHT - MAX_RADIUS;
+    scene.restitution = RESTITUTION;
+    return scene;
+}
+
+/* This frame's force on each particle: the wind plus a new random kick. */
+static void fill_forces(sandbox *s) {
+    const float wind = s->on.wind ? WIND : 0.0f;
+    int i;
+    if (s->on.random) {
+        for (i = 0; i < s->count; ++i) {
+            force_x[i] = wind + random_range(&s->random_state, -KICK, KICK);
+            force_y[i] = random_range(&s->random_state, -KICK, KICK);
+        }
+    } else {
+        for (i = 0; i < s->count; ++i) {
+            force_x[i] = wind;
+            force_y[i] = 0;
+        }
+    }
+}
+
+static void handle_keys(sandbox *s) {
+    if (IsKeyPressed(KEY_G)) s->on.gravity = !s->on.gravity, ++s->on.presses;
+    if (IsKeyPressed(KEY_W)) s->on.wind = !s->on.wind, ++s->on.presses;
+    if (IsKeyPressed(KEY_R)) s->on.random = !s->on.random, ++s->on.presses;
+    if (IsKeyPressed(KEY_D)) s->on.damping = !s->on.damping, ++s->on.presses;
+}
+
+static void sandbox_step(sandbox *s) {
+    double start, us;
+    motus_result result;
+    s->scene = scene_from(&s->on);
+    if (s->scene.has & MOTUS_HAS_FORCES) fill_forces(s);
+
+    start = GetTime();
+    result = motus_batch_step(&s->scene, &s->batch, 0, s->count, DT);
+    us = (GetTime() - start) * 1e6;
+    /* The plain mean of the first measurements, so that the first (cold caches, first touch of the arrays'
+       pages) does not linger; then an exponential moving average. */
+    ++s->steps_timed;
+    s->us_per_step += (s->steps_timed < 20 ? 1.0 / s->steps_timed : TIMING_SMOOTHING) * (us - s->us_per_step);
+
+    if (result != MOTUS_OK && result != s->last_result) /* say it once, not every frame */
+        fprintf(stderr, "sandbox: motus_batch_step: %s\n", motus_result_string(result));
+    s->last_result = result;
+}
+
+/* ---- drawing -------------------------------------------------------------------------------------- */
+typedef struct flag_name {
+    unsigned flag;
+    const char *name;
+} flag_name;
+
+static const flag_name FLAG_NAMES[] = {
+    {MOTUS_HAS_GRAVITY, "GRAVITY"},
+    {MOTUS_HAS_LINEAR_DRAG, "LINEAR_DRAG"},
+    {MOTUS_HAS_DAMPING_PER_STEP, "DAMPING_PER_STEP"},
+    {MOTUS_HAS_DAMPING_PER_SECOND, "DAMPING_PER_SECOND"},
+    {MOTUS_HAS_PARTICLE_MASS, "PARTICLE_MASS"},
+    {MOTUS_HAS_FORCES, "FORCES"},
+    {MOTUS_HAS_QUADRATIC_DRAG, "QUADRATIC_DRAG"},
+    {MOTUS_HAS_ATTRACTOR, "ATTRACTOR"},
+    {MOTUS_HAS_BOUNDS, "BOUNDS"},
+};
+#define FLAG_COUNT ((int)(sizeof FLAG_NAMES / sizeof FLAG_NAMES[0]))
+
+/* "GRAVITY|FORCES|BOUNDS", or "none". */
+static void flags_text(unsigned has, char *text, size_t size) {
+    int i;
+    text[0] = '\0';
+    for (i = 0; i < FLAG_COUNT; ++i) {
+        if (!(has & FLAG_NAMES[i].flag)) continue;
+        if (text[0]) strncat(text, "|", size - strlen(text) - 1);
+        strncat(text, FLAG_NAMES[i].name, size - strlen(text) - 1);
+    }
+    if (!text[0]) snprintf(text, size, "none");
+}
+
+static Texture2D make_dot(void) {
+    enum { SIZE = 32 };
+    const float centre = (SIZE - 1) * 0.5f, edge = SIZE * 0.5f - 1;
+    Image image = GenImageColor(SIZE, SIZE, BLANK);
+    Texture2D texture;
+    int x, y;
+    for (y = 0; y < SIZE; ++y) {
+        for (x = 0; x < SIZE; ++x) { /* full inside, fading over the outer two pixels */
+            const float dx = x - centre, dy = y - centre, alpha = (edge - sqrtf(dx * dx + dy * dy)) * 0.5f;
+            if (alpha > 0) ImageDrawPixel(&image, x, y, ColorAlpha(WHITE, alpha > 1 ? 1 : alpha));
+        }
+    }
+    texture = LoadTextureFromImage(image);
+    SetTextureFilter(texture, TEXTURE_FILTER_BILINEAR);
+    UnloadImage(image);
+    return texture;
+}
+
+static void draw_particles(const sandbox *s) {
+    const float scale = 1.0f / (float)s->dot.width;
+    int i;
+    for (i = 0; i < s->count; ++i) {
+        Vector2 corner;
+        corner.x = position_x[i] - radius[i];
+        corner.y = position_y[i] - radius[i];
+        DrawTextureEx(s->dot, corner, 0, 2 * radius[i] * scale, colour[i]);
+    }
+}
+
+static void draw_hud(const sandbox *s) {
+    const char *timing = TextFormat("motus_batch_step: %.1f us per frame", s->us_per_step);
+    const char *note = "for all particles, measured here (moving average)";
+    const int help_y = WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT + 8;
+    struct {
+        const char *key, *what;
+        int on;
+    } keys[4];
+    int i, x;
+
+    DrawRectangle(0, 0, WINDOW_WIDTH, TOP_BAR_HEIGHT, PANEL);
+    DrawLine(0, TOP_BAR_HEIGHT, WINDOW_WIDTH, TOP_BAR_HEIGHT, RULE);
+    DrawText("motus sandbox", 14, 9, 20, TEXT_BRIGHT);
+    DrawText(TextFormat("%d particles", s->count), 176, 9, 20, TEXT_DIM);
+    DrawText(timing, WINDOW_WIDTH - 14 - MeasureText(timing, 20), 9, 20, TEXT_BRIGHT);
+    DrawText(note, WINDOW_WIDTH - 14 - MeasureText(note, 10), 29, 10, TEXT_DIM);
+
+    /* Every flag motus knows, in two rows of columns; the ones this frame's scene has are lit. */
+    DrawText("scene.has:", 14, FLAGS_TOP, 10, TEXT_DIM);
+    DrawText("MOTUS_HAS_", 14, FLAGS_TOP + FLAG_ROW, 10, TEXT_DIM);
+    for (i = 0; i < FLAG_COUNT; ++i) {
+        const int on = (s->scene.has & FLAG_NAMES[i].flag) != 0, width = MeasureText(FLAG_NAMES[i].name, 10);
+        const int fx = FLAG_LEFT + (i % FLAG_COLUMNS) * FLAG_COLUMN, fy = FLAGS_TOP + (i / FLAG_COLUMNS) * FLAG_ROW;
+        if (on) {
+            Rectangle pill;
+            pill.x = (float)fx - 5, pill.y = (float)fy - 4, pill.width = (float)width + 10, pill.height = 17;
+            DrawRectangleRounded(pill, 0.5f, 6, LIT_BACK);
+        }
+        DrawText(FLAG_NAMES[i].name, fx, fy, 10, on ? LIT : TEXT_DIM);
+    }
+
+    keys[0].key = "G", keys[0].what = "gravity", keys[0].on = s->on.gravity;
+    keys[1].key = "W", keys[1].what = "wind", keys[1].on = s->on.wind;
+    keys[2].key = "R", keys[2].what = "random kicks", keys[2].on = s->on.random;
+    keys[3].key = "D", keys[3].what = "damping", keys[3].on = s->on.damping;
+    DrawRectangle(0, WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT, WINDOW_WIDTH, BOTTOM_BAR_HEIGHT, PANEL);
+    DrawLine(0, WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT, WINDOW_WIDTH, WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT, RULE);
+    x = 14;
+    for (i = 0; i < 4; ++i) {
+        const char *label = TextFormat("[%s] %s %s", keys[i].key, keys[i].what, keys[i].on ? "on" : "off");
+        DrawText(label, x, help_y, 10, keys[i].on ? LIT : TEXT_DIM);
+        x += MeasureText(label, 10) + 24;
+    }
+    DrawText("ESC quit", WINDOW_WIDTH - 14 - MeasureText("ESC quit", 10), help_y, 10, TEXT_DIM);
+}
+
+static void draw(const sandbox *s) {
+    ClearBackground(BACKGROUND);
+    draw_particles(s);
+    draw_hud(s);
+}
+
+/* ---- the run -------------------------------------------------------------------------------------- */
+static void print_summary(const sandbox *s, long frames) {
+    double sum_x = 0, sum_y = 0, sum_vx = 0, sum_vy = 0;
+    char has[160];
+    int i, inside = 0;
+    for (i = 0; i < s->count; ++i) {
+        if (position_x[i] >= 0 && position_x[i] <= WINDOW_WIDTH && position_y[i] >= 0 && position_y[i] <= WINDOW_HEIGHT)
+            ++inside;
+        sum_x += position_x[i];
+        sum_y += position_y[i];
+        sum_vx += velocity_x[i];
+        sum_vy += velocity_y[i];
+    }
+    flags_text(s->scene.has, has, sizeof has);
+    printf("frames=%ld particles=%d has=%s gravity=%d wind=%d random=%d damping=%d toggles=%ld inside=%d "
+           "mean_x=%.3f mean_y=%.3f mean_vx=%.3f mean_vy=%.3f us_per_step=%.3f\n",
+           frames, s->count, has, s->on.gravity, s->on.wind, s->on.random, s->on.damping, s->on.presses, inside,
+           sum_x / s->count, sum_y / s->count, sum_vx / s->count, sum_vy / s->count, s->us_per_step);
+}
+
+int main(int argc, char **argv) {
+    static sandbox s;
+    options opts;
+    long frame;
+
+    if (!parse_options(argc, argv, &opts)) {
+        fprintf(stderr,
+                "usage: %s [--frames N] [--particles N] [--seed N] [--gravity on|off] [--wind on|off]\n"
+                "       [--random on|off] [--damping on|off] [--screenshot FILE]\n",
+                argv[0]);
+        return 2;
+    }
+    sandbox_init(&s, &opts);
+    s.scene = scene_from(&s.on); /* what the HUD and the summary show if no frame runs */
+
+    SetTraceLogLevel(LOG_WARNING);
+    InitWindow(WINDOW_WIDTH, WINDOW_HEIGHT, "motus - sandbox");
+    if (!IsWindowReady()) {
+        fprintf(stderr, "sandbox: could not open a window (no display? try xvfb-run)\n");
+        return 1;
+    }
+    SetTargetFPS(60);
+    s.dot = make_dot();
+
+    for (frame = 0; !WindowShouldClose() && (opts.frames == 0 || frame < opts.frames); ++frame) {
+        handle_keys(&s);
+        sandbox_step(&s);
+        BeginDrawing();
+        draw(&s);
+        EndDrawing();
+    }
+
+    if (opts.screenshot) {
+        /* As in wsad.c: draw the last frame into an off-screen texture and save that. */
+        RenderTexture2D target = LoadRenderTexture(WINDOW_WIDTH, WINDOW_HEIGHT);
+        Image image;
+        BeginTextureMode(target);
+        draw(&s);
+        EndTextureMode();
+        image = LoadImageFromTexture(target.texture);
+        ImageFlipVertical(&image); /* OpenGL textures are stored bottom-up */
+        /* Opaque RGB: the translucent bars and the dots' soft edges blend into the texture's alpha too. */
+        ImageFormat(&image, PIXELFORMAT_UNCOMPRESSED_R8G8B8);
+        if (!ExportImage(image, opts.screenshot)) fprintf(stderr, "sandbox: could not write %s\n", opts.screenshot);
+        UnloadImage(image);
+        UnloadRenderTexture(target);
+    }
+    UnloadTexture(s.dot);
+    CloseWindow();
+
+    print_summary(&s, frame);
+    return 0;
+}

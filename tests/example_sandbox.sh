@@ -1,0 +1,170 @@
+#!/bin/sh
+# Usage: example_sandbox.sh SANDBOX_BINARY MODE OUTPUT_DIR
+# Runs the sandbox example in a virtual X server (Xvfb) and checks the line it prints on exit (and, headless,
+# what it draws). The simulation steps a fixed 1/60 s per frame, so every number but us_per_step is the same
+# on every run with the same options, however fast Xvfb draws.
+#   headless  90 frames with random kicks, gravity off/on x wind off/on, plus the last again without a
+#             screenshot. Checks that every run keeps all particles inside the window (they bounce), that
+#             has= names GRAVITY exactly when gravity is on and FORCES (wind and kicks are forces), that
+#             gravity pulls the particles down (mean_y over 100 px larger) and the wind pushes them right
+#             (mean_vx > 20 px/s and mean_x over 100 px larger; without wind |mean_vx| < 10 px/s), that the
+#             same options give the same line, and that the screenshot (OUTPUT_DIR/sandbox.png) is an 800x600
+#             picture of particles in every hue, more of them in the lower half (gravity).
+#   key_g, key_w, key_r, key_d
+#             start with gravity, wind and damping off and random kicks on, hold the key with real key
+#             events (xdotool), then Escape: exactly one toggle, of that key's switch, and has= follows it
+#             (G: GRAVITY; W: wind on, FORCES; R: kicks off and, without wind, no FORCES; D: DAMPING_PER_SECOND).
+set -eu
+binary=$1 mode=$2 out=$3
+for tool in xvfb-run python3; do
+    command -v "$tool" >/dev/null 2>&1 || { echo "FAILED: $tool is not installed (scripts/deps.sh installs it)"; exit 1; }
+done
+mkdir -p "$out"
+
+# field NAME LINE: the value of NAME=value in LINE.
+field() { echo "$2" | tr ' ' '\n' | sed -n "s/^$1=//p"; }
+# has_flag FLAG LINE: whether has= in LINE names FLAG.
+has_flag() { field has "$2" | tr '|' '\n' | grep -qx "$1"; }
+# summary LOG: the line printed on exit, or a failure.
+summary() { grep '^frames=' "$1" || { echo "FAILED: no summary line in $1" >&2; cat "$1" >&2; return 1; }; }
+all_inside() {
+    [ "$(field inside "$1")" = "$(field particles "$1")" ] || { echo "FAILED: not every particle is inside: $1"; return 1; }
+}
+run() { # run NAME OPTIONS...: a headless run, its line on stdout
+    name=$1
+    shift
+    xvfb-run -a -s "-screen 0 1024x768x24" "$binary" "$@" > "$out/sandbox_$name.log" 2>&1
+    summary "$out/sandbox_$name.log"
+}
+
+case "$mode" in
+headless)
+    png="$out/sandbox.png"
+    rm -f "$png"
+    calm=$(run calm --frames 90 --gravity off --wind off)
+    fall=$(run gravity --frames 90 --gravity on --wind off)
+    wind=$(run wind --frames 90 --gravity off --wind on)
+    both=$(run both --frames 90 --gravity on --wind on --screenshot "$png")
+    again=$(run again --frames 90 --gravity on --wind on)
+    printf '%s\n' "$calm" "$fall" "$wind" "$both" "$again"
+    failed=0
+    for line in "$calm" "$fall" "$wind" "$both"; do
+        all_inside "$line" || failed=1
+        gravity=$(field gravity "$line")
+        if has_flag GRAVITY "$line"; then flag=1; else flag=0; fi
+        [ "$flag" = "$gravity" ] || { echo "FAILED: has= and gravity=$gravity disagree: $line"; failed=1; }
+        has_flag FORCES "$line" || { echo "FAILED: random kicks are on, has= lacks FORCES: $line"; failed=1; }
+    done
+    awk -v y0="$(field mean_y "$calm")" -v y1="$(field mean_y "$fall")" -v vx0="$(field mean_vx "$calm")" \
+        -v vx1="$(field mean_vx "$wind")" -v x0="$(field mean_x "$calm")" -v x1="$(field mean_x "$wind")" '
+    function abs(v) { return v < 0 ? -v : v }
+    BEGIN {
+        failed = 0
+        printf "gravity: mean_y %.1f -> %.1f px\n", y0, y1
+        if (!(y1 > y0 + 100)) { print "FAILED: gravity should pull the particles down"; failed = 1 }
+        printf "wind: mean_vx %.1f -> %.1f px/s, mean_x %.1f -> %.1f px\n", vx0, vx1, x0, x1
+        if (!(abs(vx0) < 10 && vx1 > 20 && x1 > x0 + 100)) { print "FAILED: the wind should push them right"; failed = 1 }
+        exit failed
+    }' || failed=1
+    # Reproducible: the same options give the same line, but for the measured time.
+    strip() { echo "$1" | sed 's/ us_per_step=[^ ]*//'; }
+    [ "$(strip "$both")" = "$(strip "$again")" ] || { echo "FAILED: the same options gave different runs"; failed=1; }
+    [ "$failed" = 0 ] || exit 1
+    # The picture: between the bars (84 px at the top, 26 at the bottom), bright saturated pixels of every
+    # 30-degree hue, and with gravity more particle pixels in the lower half than the upper.
+    python3 - "$png" 84 574 <<'EOF'
+import colorsys, struct, sys, zlib
+
+path, top, bottom = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+data = open(path, "rb").read()
+assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+pos, idat, width, height, channels = 8, b"", 0, 0, 0
+while pos < len(data):
+    length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+    body = data[pos + 8:pos + 8 + length]
+    if kind == b"IHDR":
+        width, height, depth, colour_type, _, _, interlace = struct.unpack(">IIBBBBB", body)
+        assert depth == 8 and colour_type in (2, 6) and interlace == 0, "unexpected PNG format"
+        channels = 4 if colour_type == 6 else 3
+    elif kind == b"IDAT":
+        idat += body
+    pos += 12 + length
+if (width, height) != (800, 600):
+    sys.exit("FAILED: %s is %dx%d, expected 800x600" % (path, width, height))
+
+raw, stride = zlib.decompress(idat), width * channels
+rows, previous = [], bytearray(stride)
+for y in range(height):  # undo the per-row PNG filters
+    kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+    for i in range(stride):
+        left = line[i - channels] if i >= channels else 0
+        up_left = previous[i - channels] if i >= channels else 0
+        up = previous[i]
+        if kind == 1: line[i] = (line[i] + left) & 255
+        elif kind == 2: line[i] = (line[i] + up) & 255
+        elif kind == 3: line[i] = (line[i] + (left + up) // 2) & 255
+        elif kind == 4:
+            p = left + up - up_left
+            pa, pb, pc = abs(p - left), abs(p - up), abs(p - up_left)
+            line[i] = (line[i] + (left if pa <= pb and pa <= pc else up if pb <= pc else up_left)) & 255
+    rows.append(line)
+    previous = line
+
+hues, upper, lower, middle = [0] * 12, 0, 0, (top + bottom) // 2
+for y in range(top, bottom):
+    row = rows[y]
+    for x in range(0, stride, channels):
+        r, g, b = row[x] / 255, row[x + 1] / 255, row[x + 2] / 255
+        h, s, v = colorsys.rgb_to_hsv(r, g, b)
+        if v < 0.8 or s < 0.4:
+            continue  # background, soft edges
+        hues[int(h * 12) % 12] += 1
+        if y < middle: upper += 1
+        else: lower += 1
+print("particle pixels per 30-degree hue:", hues)
+print("upper half %d, lower half %d" % (upper, lower))
+failed = False
+if min(hues) < 100:
+    print("FAILED: not every hue is drawn"); failed = True
+if not lower > 1.5 * upper:
+    print("FAILED: with gravity the lower half should hold more particles"); failed = True
+sys.exit(1 if failed else 0)
+EOF
+    ;;
+key_g | key_w | key_r | key_d)
+    command -v xdotool >/dev/null 2>&1 || { echo "FAILED: xdotool is not installed (scripts/deps.sh installs it)"; exit 1; }
+    key=${mode#key_}
+    log="$out/sandbox_$mode.log"
+    # As tests/example_wsad.sh: wait for the window, focus it, hold the key (a press-and-release from
+    # `xdotool key` can fall between two frames), Escape. --frames is only a safety net.
+    xvfb-run -a -s "-screen 0 1024x768x24" sh -c '
+        "$1" --frames 1800 --gravity off --wind off --random on --damping off > "$3" 2>&1 & pid=$!
+        window=$(timeout 30 xdotool search --sync --onlyvisible --name "^motus - sandbox\$" | head -n 1)
+        if [ -z "$window" ]; then echo "the example opened no window"; kill $pid; exit 1; fi
+        xdotool windowfocus --sync "$window"
+        sleep 0.3
+        xdotool keydown "$2"; sleep 0.5; xdotool keyup "$2"
+        sleep 0.5
+        xdotool key Escape
+        wait $pid' sh "$binary" "$key" "$log"
+    cat "$log"
+    line=$(summary "$log")
+    all_inside "$line"
+    [ "$(field toggles "$line")" = 1 ] || { echo "FAILED: holding $key should toggle exactly once"; exit 1; }
+    case "$key" in
+    g) [ "$(field gravity "$line")" = 1 ] && has_flag GRAVITY "$line" ||
+        { echo "FAILED: G should switch gravity on, and has= name GRAVITY"; exit 1; } ;;
+    w) [ "$(field wind "$line")" = 1 ] && has_flag FORCES "$line" ||
+        { echo "FAILED: W should switch the wind on, and has= name FORCES"; exit 1; } ;;
+    r) [ "$(field random "$line")" = 0 ] && ! has_flag FORCES "$line" ||
+        { echo "FAILED: R should switch the kicks off and, with no wind, FORCES with them"; exit 1; } ;;
+    d) [ "$(field damping "$line")" = 1 ] && has_flag DAMPING_PER_SECOND "$line" ||
+        { echo "FAILED: D should switch damping on, and has= name DAMPING_PER_SECOND"; exit 1; } ;;
+    esac
+    echo "key $key: toggled once, has=$(field has "$line")"
+    ;;
+*)
+    echo "usage: $0 SANDBOX_BINARY headless|key_g|key_w|key_r|key_d OUTPUT_DIR" >&2
+    exit 2
+    ;;
+esac
