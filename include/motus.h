@@ -50,6 +50,8 @@
                            (<math.h>: sqrtf/expf/expm1f/powf, or the double ones with MOTUS_DOUBLE)
                            Define all four or none: they go together, as stb does with its hooks.
    - MOTUS_SIMD_BYTES      (64 with AVX-512, 32 with AVX, else 16)  vector width of the batch kernels.
+                                            Wider than the target's registers works, but gcc and clang then
+                                            warn -Wpsabi (harmless: the functions are inline).
    - MOTUS_NO_SIMD         (undefined)      batch kernels one particle at a time (the results are the same).
    - MOTUS_CHECKED         (undefined)      motus_batch_step checks every particle of its range before
                                             writing anything (see "Batch kernels": release builds don't).
@@ -111,6 +113,7 @@ typedef uint64_t motus__bits;
 #define MOTUS_R(literal) (literal)
 #define MOTUS__EXPONENT_MASK 0x7FF0000000000000ull
 #define MOTUS_REAL_EPSILON 2.2204460492503131e-16
+#define MOTUS__REAL_MAX 1.7976931348623157e308
 #ifndef MOTUS_SQRT
 #define MOTUS_SQRT(x) sqrt(x)
 #define MOTUS_EXP(x) exp(x)
@@ -123,6 +126,7 @@ typedef uint32_t motus__bits;
 #define MOTUS_R(literal) (literal##f)
 #define MOTUS__EXPONENT_MASK 0x7F800000u
 #define MOTUS_REAL_EPSILON 1.1920929e-7f
+#define MOTUS__REAL_MAX 3.40282347e38f
 #ifndef MOTUS_SQRT
 #define MOTUS_SQRT(x) sqrtf(x)
 #define MOTUS_EXP(x) expf(x)
@@ -492,13 +496,16 @@ MOTUS__INLINE motus_vec2 motus__spring_force(const motus_spring *s, motus_vec2 d
 }
 
 /* One particle's acceleration from its summed force (newtons) and the per-particle terms. quadratic and
-   attractor are constants where it is inlined, so unused terms cost nothing. Gravity and linear drag are
-   always applied: with zero values they add exactly zero. An immovable particle gets 0 (or NaN if
-   something it was given is NaN, so that the step reports it instead of hiding it). */
+   attractor are constants where it is inlined, so unused terms cost nothing; gravity and linear drag are
+   tested against zero, the same for every particle. An immovable particle gets 0 (or NaN if something it
+   was given is NaN, so that the step reports it instead of hiding it). */
 MOTUS__INLINE motus_vec2 motus__particle_acceleration(const motus_forces *f, motus_vec2 force, motus_real inverse_mass,
                                                       motus_vec2 x, motus_vec2 v, int quadratic, int attractor) {
-    motus_vec2 a = motus_vec2_add(motus_vec2_scale(force, inverse_mass), f->gravity);
-    a = motus_vec2_sub(a, motus_vec2_scale(v, f->linear_drag));
+    motus_vec2 a = motus_vec2_scale(force, inverse_mass);
+    /* Terms that are off are skipped, not added as zero: adding +0 would turn a -0 into +0, and the
+       batch kernels, which skip them, agree with this bit for bit. */
+    if (f->gravity.x != 0 || f->gravity.y != 0) a = motus_vec2_add(a, f->gravity);
+    if (f->linear_drag != 0) a = motus_vec2_sub(a, motus_vec2_scale(v, f->linear_drag));
     if (quadratic) a = motus_vec2_sub(a, motus_vec2_scale(v, f->quadratic_drag * motus_vec2_length(v)));
     if (attractor) {
         motus_vec2 r = motus_vec2_sub(x, f->attractor_position);
@@ -1188,7 +1195,7 @@ MOTUS__INLINE motus__lane motus__select(motus__mask mask, motus__lane a, motus__
 typedef struct motus__kernel_constants {
     motus_real h, gravity[3], linear_drag, quadratic_drag, damping, inverse_mass;
     motus_real attractor[3], attractor_strength, bounds_min[3], bounds_max[3], restitution;
-    int semi_implicit;
+    int semi_implicit, has_gravity, has_linear_drag;
 } motus__kernel_constants;
 
 /* Kernel flags: the first six choose among the 64 fast kernels; GENERAL adds every other term. */
@@ -1205,7 +1212,8 @@ typedef struct motus__kernel_constants {
 typedef struct motus__kernel_lanes {
     motus__lane h, gravity[3], linear_drag, quadratic_drag, damping, inverse_mass;
     motus__lane attractor[3], attractor_strength, bounds_min[3], bounds_max[3], bounce;
-    motus__mask semi_implicit, has_quadratic_drag, has_attractor;
+    motus__mask semi_implicit, has_quadratic_drag, has_attractor, has_gravity, has_linear_drag;
+    motus__lane uniform_movable;
 } motus__kernel_lanes;
 
 /* Lane masks from a flag that is the same for every lane: all ones or all zeros. */
@@ -1245,12 +1253,16 @@ MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus
         if (flags & MOTUS__K_LINEAR_DRAG) a[d] = a[d] - v[d] * k->linear_drag;
     );
     if (flags & MOTUS__K_GENERAL) {
-        /* Terms the scene lacks are selected away rather than multiplied by 0, which would turn an
-           infinite intermediate into NaN. */
-        motus__lane speed = v[0] * v[0] + v[1] * v[1], r[3], r2, drag, pull;
+        /* Terms the scene lacks are selected away: added as zero they would turn -0 into +0, and multiplied
+           by 0 an infinite intermediate into NaN. */
+        motus__lane speed, r[3], r2, drag, pull;
+        MOTUS__EACH_DIM(a[d] = motus__select(k->has_gravity, a[d] + k->gravity[d], a[d]);
+                        a[d] = motus__select(k->has_linear_drag, a[d] - v[d] * k->linear_drag, a[d]););
+        speed = v[0] * v[0] + v[1] * v[1];
         if (dims == 3) speed = speed + v[2] * v[2];
         drag = motus__select(k->has_quadratic_drag, k->quadratic_drag * motus__sqrt(speed), zero);
-        MOTUS__EACH_DIM(a[d] = a[d] - v[d] * drag; r[d] = x[d] - k->attractor[d];);
+        MOTUS__EACH_DIM(a[d] = motus__select(k->has_quadratic_drag, a[d] - v[d] * drag, a[d]);
+                        r[d] = x[d] - k->attractor[d];);
         r2 = r[0] * r[0] + r[1] * r[1];
         if (dims == 3) r2 = r2 + r[2] * r[2];
         /* mu/(r2*sqrt(r2)) where r2 > 0, else no pull (that lane's division by zero is discarded) */
@@ -1260,6 +1272,9 @@ MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus
     if (flags & MOTUS__K_MASS) { /* immovable particles: no acceleration (a NaN passes on) */
         motus__lane movable = motus__select(inverse_mass != zero, motus__splat(1), zero);
         MOTUS__EACH_DIM(a[d] = a[d] * movable;);
+        MOTUS__EACH_DIM(check[d] = check[d] + inverse_mass;); /* a NaN mass shows even without forces */
+    } else if (flags & MOTUS__K_GENERAL) { /* a uniform inverse mass of 0 comes here: nothing accelerates */
+        MOTUS__EACH_DIM(a[d] = a[d] * k->uniform_movable;);
     }
     MOTUS__EACH_DIM(
         motus__lane old_velocity = v[d];
@@ -1269,19 +1284,24 @@ MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus
         else
             x[d] = x[d] + v[d] * h;
         if (flags & MOTUS__K_DAMPING) v[d] = v[d] * k->damping;
+        /* Checked before the bounds, whose clamp would turn an infinite position into the wall; explicit
+           Euler's new velocity does not reach its position, so the general kernel adds it too. */
+        check[d] = check[d] + x[d];
+        if (flags & MOTUS__K_GENERAL) check[d] = check[d] + v[d];
         if (flags & MOTUS__K_BOUNDS) { /* as motus_particle_bounce: mirror, bounce, then clamp */
-            motus__mask below = x[d] < k->bounds_min[d], above;
+            motus__mask below = x[d] < k->bounds_min[d], above, finite;
             x[d] = motus__select(below, k->bounds_min[d] + (k->bounds_min[d] - x[d]), x[d]);
             v[d] = motus__select(below, v[d] * k->bounce, v[d]);
             above = x[d] > k->bounds_max[d];
             x[d] = motus__select(above, k->bounds_max[d] - (x[d] - k->bounds_max[d]), x[d]);
             v[d] = motus__select(above, v[d] * k->bounce, v[d]);
-            x[d] = motus__select(x[d] < k->bounds_min[d], k->bounds_min[d], x[d]);
-            x[d] = motus__select(x[d] > k->bounds_max[d], k->bounds_max[d], x[d]);
+            /* Clamped only where finite: an infinite position must stay infinite for the check below. */
+            finite = (x[d] >= motus__splat(-MOTUS__REAL_MAX)) & (x[d] <= motus__splat(MOTUS__REAL_MAX));
+            x[d] = motus__select((x[d] < k->bounds_min[d]) & finite, k->bounds_min[d], x[d]);
+            x[d] = motus__select((x[d] > k->bounds_max[d]) & finite, k->bounds_max[d], x[d]);
         }
         motus__store(b->position[d] + i, x[d], n);
         motus__store(b->velocity[d] + i, v[d], n);
-        check[d] = check[d] + x[d];
     );
 }
 
@@ -1326,6 +1346,9 @@ MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int co
     k.semi_implicit = motus__mask_if(c->semi_implicit);
     k.has_quadratic_drag = motus__mask_if(c->quadratic_drag != 0);
     k.has_attractor = motus__mask_if(c->attractor_strength != 0);
+    k.has_gravity = motus__mask_if(c->has_gravity);
+    k.has_linear_drag = motus__mask_if(c->has_linear_drag);
+    k.uniform_movable = motus__splat(c->inverse_mass != 0 ? MOTUS_R(1.0) : MOTUS_R(0.0));
     arrays.inverse_mass = batch->inverse_mass;
     for (d = 0; d < 3; ++d) {
         arrays.position[d] = batch->position[d];
@@ -1377,7 +1400,7 @@ MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int co
     MOTUS__KERNEL_CASE(dims, (base) + 0) MOTUS__KERNEL_CASE(dims, (base) + 1) MOTUS__KERNEL_CASE(dims, (base) + 2)  \
     MOTUS__KERNEL_CASE(dims, (base) + 3) MOTUS__KERNEL_CASE(dims, (base) + 4) MOTUS__KERNEL_CASE(dims, (base) + 5)  \
     MOTUS__KERNEL_CASE(dims, (base) + 6) MOTUS__KERNEL_CASE(dims, (base) + 7)
-#define MOTUS__GENERAL (MOTUS__K_GENERAL | MOTUS__K_GRAVITY | MOTUS__K_LINEAR_DRAG | MOTUS__K_DAMPING | MOTUS__K_BOUNDS)
+#define MOTUS__GENERAL (MOTUS__K_GENERAL | MOTUS__K_DAMPING | MOTUS__K_BOUNDS)
 /* One function per dimension count, each with its 68 kernels: the 64 fast ones and the general one for the
    4 combinations of the two optional arrays. */
 #define MOTUS__KERNEL_DISPATCH(name, dims)                                                                       \
@@ -1445,6 +1468,7 @@ MOTUS_API motus_result motus_scene_check(const motus_scene *scene, const motus_b
         ((has & MOTUS_HAS_ATTRACTOR) && scene->attractor_strength < 0))
         return MOTUS_ERROR_INVALID_FORCES;
     if (motus__scene_damping_flags(has) && !motus__damping_is_valid(scene->damping)) return MOTUS_ERROR_INVALID_DAMPING;
+    if ((has & MOTUS_HAS_BOUNDS) && !motus_real_is_finite(scene->restitution)) return MOTUS_ERROR_NOT_FINITE;
     if ((has & MOTUS_HAS_BOUNDS) && !motus__damping_is_valid(scene->restitution)) return MOTUS_ERROR_INVALID_DAMPING;
     return MOTUS_OK;
 }
@@ -1504,22 +1528,27 @@ MOTUS_API motus_result motus_batch_step(const motus_scene *scene, const motus_ba
     k.linear_drag = k.quadratic_drag = k.attractor_strength = k.restitution = 0;
     k.damping = 1;
     k.semi_implicit = scene->method == MOTUS_SEMI_IMPLICIT_EULER;
+    k.has_gravity = k.has_linear_drag = 0;
     k.inverse_mass = (has & MOTUS_HAS_PARTICLE_MASS) ? 0 : scene->inverse_mass;
     for (d = 0; d < 3; ++d) {
         k.gravity[d] = k.attractor[d] = 0;
         k.bounds_min[d] = -(motus_real)HUGE_VAL;
         k.bounds_max[d] = (motus_real)HUGE_VAL;
     }
-    /* A uniform inverse mass of 0: nothing accelerates anything, as in motus_stepper_step. */
-    if ((has & MOTUS_HAS_PARTICLE_MASS) || scene->inverse_mass != 0) {
-        if (has & MOTUS_HAS_GRAVITY)
-            for (d = 0; d < batch->dimensions; ++d) k.gravity[d] = scene->gravity[d];
-        if (has & MOTUS_HAS_LINEAR_DRAG) k.linear_drag = scene->linear_drag;
-        if (has & MOTUS_HAS_QUADRATIC_DRAG) k.quadratic_drag = scene->quadratic_drag;
-        if (has & MOTUS_HAS_ATTRACTOR) {
-            for (d = 0; d < batch->dimensions; ++d) k.attractor[d] = scene->attractor[d];
-            k.attractor_strength = scene->attractor_strength;
+    /* Gravity and linear drag count as on only when not zero, as in motus_stepper_step. */
+    if (has & MOTUS_HAS_GRAVITY)
+        for (d = 0; d < batch->dimensions; ++d) {
+            k.gravity[d] = scene->gravity[d];
+            k.has_gravity |= scene->gravity[d] != 0;
         }
+    if (has & MOTUS_HAS_LINEAR_DRAG) {
+        k.linear_drag = scene->linear_drag;
+        k.has_linear_drag = scene->linear_drag != 0;
+    }
+    if (has & MOTUS_HAS_QUADRATIC_DRAG) k.quadratic_drag = scene->quadratic_drag;
+    if (has & MOTUS_HAS_ATTRACTOR) {
+        for (d = 0; d < batch->dimensions; ++d) k.attractor[d] = scene->attractor[d];
+        k.attractor_strength = scene->attractor_strength;
     }
     if (has & MOTUS_HAS_DAMPING_PER_STEP) k.damping = scene->damping;
     if (has & MOTUS_HAS_DAMPING_PER_SECOND) k.damping = MOTUS_POW(scene->damping, dt); /* as damp_per_second */
@@ -1531,23 +1560,28 @@ MOTUS_API motus_result motus_batch_step(const motus_scene *scene, const motus_ba
         k.restitution = scene->restitution;
     }
 
-    if (has & MOTUS_HAS_GRAVITY) flags |= MOTUS__K_GRAVITY;
-    if (has & MOTUS_HAS_LINEAR_DRAG) flags |= MOTUS__K_LINEAR_DRAG;
+    if (k.has_gravity) flags |= MOTUS__K_GRAVITY;
+    if (k.has_linear_drag) flags |= MOTUS__K_LINEAR_DRAG;
     if (motus__scene_damping_flags(has)) flags |= MOTUS__K_DAMPING;
     if (has & MOTUS_HAS_PARTICLE_MASS) flags |= MOTUS__K_MASS;
     if (has & MOTUS_HAS_FORCES) flags |= MOTUS__K_FORCES;
     if (has & MOTUS_HAS_BOUNDS) flags |= MOTUS__K_BOUNDS;
-    if ((has & (MOTUS_HAS_QUADRATIC_DRAG | MOTUS_HAS_ATTRACTOR)) || !k.semi_implicit) flags |= MOTUS__GENERAL;
+    if ((has & (MOTUS_HAS_QUADRATIC_DRAG | MOTUS_HAS_ATTRACTOR)) || !k.semi_implicit ||
+        (!(has & MOTUS_HAS_PARTICLE_MASS) && scene->inverse_mass == 0))
+        flags = (flags & (MOTUS__K_MASS | MOTUS__K_FORCES)) | MOTUS__GENERAL; /* gravity, drag: by mask */
 
     broken = batch->dimensions == 2 ? motus__batch_dispatch2(batch, first, count, &k, flags)
                                     : motus__batch_dispatch3(batch, first, count, &k, flags);
     if (broken < 0) return MOTUS_ERROR_UNSUPPORTED; /* cannot happen: every flag combination has a kernel */
     if (broken) { /* the sum overflowed or a value is not finite: look at each one */
         int i;
-        for (i = first; i < first + count; ++i)
+        for (i = first; i < first + count; ++i) {
+            if ((has & MOTUS_HAS_PARTICLE_MASS) && !motus_real_is_finite(batch->inverse_mass[i]))
+                return MOTUS_ERROR_NOT_FINITE;
             for (d = 0; d < batch->dimensions; ++d)
                 if (!motus_real_is_finite(batch->position[d][i]) || !motus_real_is_finite(batch->velocity[d][i]))
                     return MOTUS_ERROR_NOT_FINITE;
+        }
     }
     return MOTUS_OK;
 }
@@ -1560,6 +1594,7 @@ MOTUS_API motus_result motus_batch_add_spring_forces(const motus_batch *batch, i
     motus_result result;
     int i;
     if (!batch) return MOTUS_ERROR_NULL_POINTER;
+    if (count < 0) return MOTUS_ERROR_INVALID_COUNT;
     if (batch->dimensions != 2) return MOTUS_ERROR_UNSUPPORTED;
     if (spring_count > 0 && (!batch->position[0] || !batch->position[1] || !batch->velocity[0] ||
                              !batch->velocity[1] || !batch->force[0] || !batch->force[1]))

@@ -1,6 +1,6 @@
 /* Two translation units include motus.h and link into one program: every function is static inline, so
-   nothing is defined twice. This unit touches every public function so that the strict warning flags of the
-   compile matrix see all of them. Also compiled as C++ (-x c++). */
+   nothing is defined twice. This unit touches every public function (the batch API included) so that the
+   strict warning flags of the compile matrix see all of them. Also compiled as C++ (-x c++). */
 #include "motus.h"
 
 #include <string.h>
@@ -53,10 +53,62 @@ static int compile_stepper(void) {
     return bad;
 }
 
+/* The batch API: three particles in arrays (2D), a spring pushing into the force arrays, gravity, damping
+   per second, per-particle masses (one immovable) and bounds, stepped as two ranges; and one particle
+   bounced by hand. */
+static int compile_batch(void) {
+    motus_real x[3] = {0, 2, 5}, y[3] = {1, 1, 1}, vx[3] = {0, 0, 10}, vy[3] = {0, 0, 0};
+    motus_real fx[3] = {0, 0, 0}, fy[3] = {0, 0, 0}, inverse_mass[3] = {1, 1, 0};
+    motus_spring spring;
+    motus_scene scene;
+    motus_batch batch;
+    motus_particle p;
+    const char *field = NULL;
+    int index = -1, bad = 0;
+    memset(&spring, 0, sizeof spring);
+    memset(&scene, 0, sizeof scene);
+    memset(&batch, 0, sizeof batch);
+    spring.a = 0;
+    spring.b = 1;
+    spring.rest_length = 1;
+    spring.stiffness = 10;
+    scene.has = MOTUS_HAS_GRAVITY | MOTUS_HAS_FORCES | MOTUS_HAS_PARTICLE_MASS | MOTUS_HAS_DAMPING_PER_SECOND |
+                MOTUS_HAS_BOUNDS;
+    scene.method = MOTUS_SEMI_IMPLICIT_EULER;
+    scene.gravity[1] = MOTUS_R(-9.81);
+    scene.damping = MOTUS_R(0.5);
+    scene.bounds_min[0] = scene.bounds_min[1] = -10;
+    scene.bounds_max[0] = scene.bounds_max[1] = 10;
+    scene.restitution = MOTUS_R(0.5);
+    batch.dimensions = 2;
+    batch.position[0] = x;
+    batch.position[1] = y;
+    batch.velocity[0] = vx;
+    batch.velocity[1] = vy;
+    batch.force[0] = fx;
+    batch.force[1] = fy;
+    batch.inverse_mass = inverse_mass;
+    bad |= motus_scene_check(&scene, &batch) != MOTUS_OK;
+    bad |= motus_batch_check(&scene, &batch, 0, 3, &index, &field) != MOTUS_OK || field != NULL;
+    /* d = x0 - x1 = -2: F = -k*d + k*L*d/|d| = 20 - 10 on particle 0, the opposite on particle 1 */
+    bad |= motus_batch_add_spring_forces(&batch, 3, &spring, 1) != MOTUS_OK;
+    bad |= fx[0] != 10 || fx[1] != -10;
+    bad |= motus_batch_step(&scene, &batch, 0, 2, MOTUS_R(0.5)) != MOTUS_OK;
+    bad |= motus_batch_step(&scene, &batch, 2, 1, MOTUS_R(0.5)) != MOTUS_OK;
+    bad |= x[0] <= 0 || x[1] >= 2 || y[0] >= 1; /* pulled together, falling */
+    bad |= x[2] != 10 || y[2] != 1;             /* immovable: 5 + 10*0.5 lands on the wall and stays */
+    bad |= motus_batch_step(&scene, &batch, 0, -1, 1) != MOTUS_ERROR_INVALID_COUNT;
+    bad |= motus_particle_init(&p, motus_v2(12, 0), 1) != MOTUS_OK;
+    p.velocity = motus_v2(4, 0);
+    bad |= motus_particle_bounce(&p, motus_v2(-10, -10), motus_v2(10, 10), MOTUS_R(0.5)) != MOTUS_OK;
+    bad |= p.position.x != 8 || p.velocity.x != -2;
+    return bad;
+}
+
 int compile_unit_a(void) {
     motus_particle p, wall;
     motus_real phi1, phi2;
-    int bad = compile_stepper();
+    int bad = compile_stepper() | compile_batch();
     bad |= motus_particle_init(&p, motus_v2(400, 300), 2) != MOTUS_OK;
     bad |= motus_particle_init_immovable(&wall, motus_v2(0, 0)) != MOTUS_OK;
     bad |= motus_particle_add_force(&p, motus_vec2_sub(motus_v2(100, 0), motus_v2(0, 0))) != MOTUS_OK;
