@@ -1335,7 +1335,7 @@ MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int co
     motus_real buffer[10][MOTUS__LANES];
     motus__lane check[3];
     motus_real sum = 0;
-    int i = first, end = first + count, lane, d, head;
+    int i = first, end = first + count, lane, d, head, whole_end, part, part_start[2], part_length[2];
     k.h = motus__splat(c->h);
     k.linear_drag = motus__splat(c->linear_drag);
     k.quadratic_drag = motus__splat(c->quadratic_drag);
@@ -1364,25 +1364,22 @@ MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int co
     }
     partial.inverse_mass = buffer[9];
     check[0] = check[1] = check[2] = motus__splat(0);
-    /* One place where the kernel's body is inlined, for whole vectors in place and for the partial ones at
-       either end, which go through a zero-padded copy (each kernel's code then appears once, not three
-       times). The first partial vector makes the whole vectors start on a vector boundary of the first
-       position array: stores that straddle cache lines cost up to twice as much. */
     head = MOTUS__VECTOR ? (int)(((uintptr_t)0 - (uintptr_t)(arrays.position[0] + i)) % MOTUS_SIMD_BYTES / sizeof(motus_real)) : 0;
-    while (i < end) {
-        int n = end - i < MOTUS__LANES ? end - i : MOTUS__LANES;
-        const motus__arrays *from = &arrays;
-        int at = i;
-        if (head > 0 && head < n) n = head;
-        head = 0;
-        if (n < MOTUS__LANES) { /* copy in: only the arrays this kernel reads */
-            motus__partial_copy(&arrays, i, &partial, n, dims, flags, 1);
-            from = &partial;
-            at = 0;
-        }
-        motus__batch_lanes(from, at, &k, dims, flags, check);
-        if (n < MOTUS__LANES) motus__partial_copy(&arrays, i, &partial, n, dims, flags, 0);
-        i += n;
+    /* Whole vectors in place, starting on a vector boundary of the first position array (stores that
+       straddle cache lines cost up to twice as much); then the partial vectors at either end, through a
+       zero-padded copy, from one place so that each kernel's body is compiled twice, not three times. */
+    if (!(head > 0 && head < end - i)) head = 0;
+    whole_end = i + head + (end - i - head) / MOTUS__LANES * MOTUS__LANES;
+    for (i += head; i < whole_end; i += MOTUS__LANES) motus__batch_lanes(&arrays, i, &k, dims, flags, check);
+    part_start[0] = first;
+    part_length[0] = head;
+    part_start[1] = whole_end;
+    part_length[1] = end - whole_end;
+    for (part = 0; part < 2; ++part) {
+        if (part_length[part] == 0) continue;
+        motus__partial_copy(&arrays, part_start[part], &partial, part_length[part], dims, flags, 1);
+        motus__batch_lanes(&partial, 0, &k, dims, flags, check);
+        motus__partial_copy(&arrays, part_start[part], &partial, part_length[part], dims, flags, 0);
     }
     check[0] = check[0] + check[1] + check[2];
 #if MOTUS__VECTOR
