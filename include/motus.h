@@ -24,7 +24,8 @@
    - The y axis points wherever you choose; motus never assumes "down". raylib's screen y grows downwards.
    - `motus_real` is float unless you define MOTUS_DOUBLE before including this header.
    - `motus_vec2` is two `motus_real`s, x then y, with no padding: in the float build it has the same layout as
-     raylib's `Vector2`, so arrays of either can be reinterpreted (tests/unit.c checks this at compile time).
+     raylib's `Vector2` (checked at compile time by the tests), so an array of either converts to the other
+     with one memcpy. Reading one through a pointer to the other would break C's aliasing rules.
    - A particle stores its inverse mass. Inverse mass 0 is an immovable particle: forces never move it.
    - Forces accumulate until you clear them. motus_particle_step does not clear them, so a force that is
      constant over many steps (gravity) may be added once; the reference program clears every frame.
