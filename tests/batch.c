@@ -1479,6 +1479,68 @@ static int dump(void) {
     return 0;
 }
 
+/* motus_batch_add_spring_forces checks its springs several at a time (motus__springs_check): it must give
+   motus_forces_check's result for every array length around the vector block sizes and every bad field at
+   every position, including the last spring (which the vector blocks leave to the scalar loop). */
+TEST(spring_check_agrees_with_forces_check) {
+    static motus_spring springs[160];
+    const int count = 50;
+    int n, position, bad, checked = 0, disagree = 0;
+    for (n = 0; n <= 70; ++n)
+        for (position = -1; position < n; ++position)
+            for (bad = 0; bad < 16; ++bad) {
+                motus_forces forces;
+                motus_result expected, got;
+                int i;
+                if (position < 0 && bad > 0) break;
+                for (i = 0; i < n; ++i) {
+                    motus_spring *s = &springs[i];
+                    s->a = (i * 7) % count;
+                    s->b = i % 3 == 0 ? -1 : (s->a + 1 + i % (count - 1)) % count;
+                    s->anchor.x = random_real(-3, 3);
+                    s->anchor.y = random_real(-3, 3);
+                    s->rest_length = i % 2 ? 0 : random_real(0, 2);
+                    s->stiffness = random_real(0, 100);
+                    s->damping = i % 5 ? MOTUS_R(0.0) : negative_zero();
+                }
+                if (position >= 0) {
+                    motus_spring *s = &springs[position];
+                    switch (bad) {
+                    case 0: s->a = -1; break;
+                    case 1: s->a = count; break;
+                    case 2: s->b = -2; break;
+                    case 3: s->b = count; break;
+                    case 4: s->b = s->a; break;
+                    case 5: s->anchor.x = not_a_number(); break;
+                    case 6: s->anchor.y = infinity(); break;
+                    case 7: s->rest_length = -infinity(); break;
+                    case 8: s->stiffness = not_a_number(); break;
+                    case 9: s->damping = infinity(); break;
+                    case 10: s->rest_length = MOTUS_R(-1e-30); break;
+                    case 11: s->stiffness = -REAL_MAX; break;
+                    case 12: s->damping = MOTUS_R(-0.5); break;
+                    case 13: s->a = INT_MAX; break;
+                    case 14: s->b = INT_MAX; break;
+                    default: s->b = INT_MIN; break;
+                    }
+                }
+                memset(&forces, 0, sizeof forces);
+                forces.springs = springs;
+                forces.spring_count = n;
+                expected = motus_forces_check(&forces, count);
+                got = motus__springs_check(springs, n, count);
+                checked++;
+                if (got != expected) {
+                    if (disagree++ < 10)
+                        fprintf(stderr, "n %d, bad field %d at %d: %s, motus_forces_check %s\n", n, bad, position,
+                                motus_result_string(got), motus_result_string(expected));
+                }
+                if (position >= 0) ENSURE(expected != MOTUS_OK);
+            }
+    printf("%d spring arrays checked both ways, %d disagree\n", checked, disagree);
+    ENSURE_EQ_INT(disagree, 0);
+}
+
 static const motus_test_case TESTS[] = {
     TEST_CASE(batch_equals_single_particle),
     TEST_CASE(range_split_does_not_change_results),
@@ -1500,9 +1562,11 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(bounds_keep_particles_inside),
     TEST_CASE(damping_per_second_is_rate_independent),
     TEST_CASE(immovable_particles_move_kinematically),
+    TEST_CASE(spring_check_agrees_with_forces_check),
 };
 
 int main(int argc, char **argv) {
     if (argc > 1 && strcmp(argv[1], "--dump") == 0) return dump();
     return motus_test_main(argc, argv, TESTS, TEST_COUNT(TESTS));
 }
+
