@@ -1,0 +1,546 @@
+/* Stability limits and the extremes: where each method's amplitude starts to grow on a spring (measured by
+   bisection with the real stepper, against motus_method_stability_limit), automatic substepping, dt from
+   1e-7 s to 1 s, 10^7-step runs, masses from 1e-20 to 1e20 and immovable particles.
+   Built in float and in double (MOTUS_DOUBLE). `motus_stability bisect_thresholds` prints the measured
+   thresholds next to theory. No timing. */
+#include "motus.h"
+#include "support/motus_test.h"
+
+#include <float.h>
+#include <limits.h>
+
+#ifdef MOTUS_DOUBLE
+#define REAL_MAX DBL_MAX
+#define REAL_MIN DBL_MIN
+#else
+#define REAL_MAX FLT_MAX
+#define REAL_MIN FLT_MIN
+#endif
+#define EPS ((double)MOTUS_REAL_EPSILON)
+#define CAPACITY 8
+
+static motus_real not_a_number(void) { return (motus_real)NAN; }
+static motus_real infinity(void) { return (motus_real)HUGE_VAL; }
+static int same_bytes(const void *a, const void *b, size_t size) { return memcmp(a, b, size) == 0; }
+
+/* A stepper with its own scratch: 8 arrays of CAPACITY is more than any method takes. */
+typedef struct test_stepper {
+    motus_stepper stepper;
+    motus_vec2 scratch[8 * CAPACITY];
+} test_stepper;
+
+static void stepper_init(test_stepper *s, motus_method method) {
+    motus_stepper_desc desc;
+    memset(s, 0, sizeof *s);
+    memset(&desc, 0, sizeof desc);
+    desc.capacity = CAPACITY;
+    desc.method = method;
+    desc.scratch = s->scratch;
+    desc.scratch_bytes = sizeof s->scratch;
+    ENSURE(motus_stepper_scratch_size(method, CAPACITY) <= sizeof s->scratch);
+    ENSURE_EQ_INT(motus_stepper_init(&s->stepper, &desc), MOTUS_OK);
+}
+
+/* The methods with a finite, nonzero limit: the ones substepping can keep stable. */
+static int has_finite_limit(motus_method m) {
+    motus_real limit = motus_method_stability_limit(m);
+    return limit > 0 && motus_real_is_finite(limit);
+}
+
+/* =================================================================================================
+   The oscillator: one particle of mass M on a zero-length spring of stiffness K to the origin
+   =================================================================================================
+   w = sqrt(K/M) = 2 rad/s, so h = z/2 is exact in binary for the z the bisection tries up to rounding of
+   z itself. The amplitude is |(x, v/w)|, which the exact motion keeps at 1. */
+#define OSC_MASS MOTUS_R(0.5)
+#define OSC_STIFFNESS MOTUS_R(2.0)
+#define OSC_OMEGA 2.0
+
+typedef struct oscillator {
+    test_stepper s;
+    motus_particle particle;
+    motus_spring spring;
+    motus_forces forces;
+} oscillator;
+
+static void oscillator_init(oscillator *o, motus_method method, motus_real damping) {
+    memset(o, 0, sizeof *o);
+    stepper_init(&o->s, method);
+    ENSURE_EQ_INT(motus_particle_init(&o->particle, motus_v2(1, 0), OSC_MASS), MOTUS_OK);
+    o->spring.a = 0;
+    o->spring.b = -1;
+    o->spring.stiffness = OSC_STIFFNESS;
+    o->spring.damping = damping;
+    o->forces.springs = &o->spring;
+    o->forces.spring_count = 1;
+}
+
+static double amplitude(const motus_particle *p, double omega) {
+    double x = (double)p->position.x, y = (double)p->position.y;
+    double vx = (double)p->velocity.x / omega, vy = (double)p->velocity.y / omega;
+    return sqrt(x * x + y * y + vx * vx + vy * vy);
+}
+
+/* The largest amplitude over `steps` steps of h, from amplitude 1. A step that overflows counts as
+   growth without end (HUGE_VAL). */
+static double largest_amplitude(motus_method method, motus_real h, int steps, motus_real damping) {
+    oscillator o;
+    double largest = 1;
+    int i;
+    oscillator_init(&o, method, damping);
+    for (i = 0; i < steps; ++i) {
+        double a;
+        if (motus_stepper_step(&o.s.stepper, &o.particle, 1, &o.forces, h) != MOTUS_OK) return HUGE_VAL;
+        a = amplitude(&o.particle, OSC_OMEGA);
+        if (a > largest) largest = a;
+    }
+    return largest;
+}
+
+/* The amplitude after `steps` steps of h (HUGE_VAL if a step overflows). */
+static double final_amplitude(motus_method method, motus_real h, int steps, motus_real damping) {
+    oscillator o;
+    int i;
+    oscillator_init(&o, method, damping);
+    for (i = 0; i < steps; ++i)
+        if (motus_stepper_step(&o.s.stepper, &o.particle, 1, &o.forces, h) != MOTUS_OK) return HUGE_VAL;
+    return amplitude(&o.particle, OSC_OMEGA);
+}
+
+/* "Grows": the amplitude passes 1000 within 4000 steps. Below the limit a symplectic method's amplitude
+   wobbles, more as z nears the limit (the invariant ellipse of the step stretches like 1/sqrt(limit - z)),
+   but it passes 1000 only within ~1e-6 of the limit; above it the amplitude grows by 1 + sqrt(2*limit*dz)
+   per step (RK4: 1 + 2.5*dz), past 1000 in 4000 steps from dz ~ 1e-6 (RK4: 1e-3, 0.04% of its limit). */
+static int grows(motus_method method, double z) {
+    return largest_amplitude(method, (motus_real)(z / OSC_OMEGA), 4000, 0) > 1000;
+}
+
+/* Bisection on z between a stable and an unstable value; returns w*h at the edge, h as rounded. */
+static double measured_threshold(motus_method method, double lo, double hi) {
+    int k;
+    ENSURE(!grows(method, lo));
+    ENSURE(grows(method, hi));
+    for (k = 0; k < 40; ++k) {
+        double mid = 0.5 * (lo + hi);
+        if (grows(method, mid)) hi = mid;
+        else lo = mid;
+    }
+    return (double)(motus_real)(hi / OSC_OMEGA) * OSC_OMEGA;
+}
+
+/* =================================================================================================
+   Stability limits: measured against theory
+   ================================================================================================= */
+TEST(limits_table) {
+    ENSURE(motus_method_stability_limit(MOTUS_SEMI_IMPLICIT_EULER) == 2);
+    ENSURE(motus_method_stability_limit(MOTUS_POSITION_VERLET) == 2);
+    ENSURE(motus_method_stability_limit(MOTUS_VELOCITY_VERLET) == 2);
+    ENSURE(motus_method_stability_limit(MOTUS_LEAPFROG) == 2);
+    ENSURE(motus_method_stability_limit(MOTUS_EXPLICIT_EULER) == 0);
+    ENSURE(motus_method_stability_limit(MOTUS_MIDPOINT) == 0);
+    ENSURE_NEAR(motus_method_stability_limit(MOTUS_RK4), 2 * sqrt(2.0), 2 * EPS);
+    ENSURE(!motus_real_is_finite(motus_method_stability_limit(MOTUS_EXACT_LINEAR_DRAG)));
+    ENSURE(motus_method_stability_limit(MOTUS_EXACT_LINEAR_DRAG) > 0);
+    ENSURE(motus_method_stability_limit(MOTUS_METHOD_COUNT) == -1);
+    ENSURE(motus_method_stability_limit((motus_method)-1) == -1);
+    {
+        /* Forest-Ruth from its trace (STABILITY LIMITS): three leapfrog maps S(s) = [[1 - s^2/2, s - s^3/4],
+           [-s, 1 - s^2/2]] of s = theta*z, (1 - 2*theta)*z, theta*z; the limit is where the trace of the
+           product is back at 2. Bisection in double on that closed form. */
+        const double theta = 1 / (2 - cbrt(2.0));
+        double lo = 1.4, hi = 1.7;
+        int k;
+        for (k = 0; k < 60; ++k) {
+            double z = 0.5 * (lo + hi), a = theta * z, b = (1 - 2 * theta) * z;
+            double P = 1 - a * a / 2, Q = a - a * a * a / 4, p = 1 - b * b / 2, q = b - b * b * b / 4;
+            double trace = 2 * p * (P * P - a * Q) - 2 * P * (Q * b + a * q);
+            if (trace < 2) lo = z;
+            else hi = z;
+        }
+        /* The trace loses ~1e-15 near the root to cancellation: 1e-12 in double, rounding in float. */
+        ENSURE_NEAR(motus_method_stability_limit(MOTUS_FOREST_RUTH), lo, fmax(1e-12, 2 * EPS));
+    }
+}
+
+TEST(bisect_thresholds) {
+    int m;
+    printf("  %-20s %-12s %-12s %s\n", "method", "theory w*h", "measured", "off by");
+    for (m = 0; m < MOTUS_METHOD_COUNT; ++m) {
+        const double limit = (double)motus_method_stability_limit((motus_method)m);
+        double measured;
+        if (!has_finite_limit((motus_method)m)) continue;
+        measured = measured_threshold((motus_method)m, 0.5 * limit, 1.5 * limit);
+        printf("  %-20s %-12.7f %-12.7f %+.2e\n", motus_method_name((motus_method)m), limit, measured,
+               (measured - limit) / limit);
+        ENSURE_NEAR(measured, limit, 0.01 * limit);
+    }
+}
+
+/* Explicit Euler and midpoint multiply the amplitude by exactly g(z) every step (their step is a rotation
+   times g: see STABILITY LIMITS), so they grow at every z > 0. Float cannot see a growth below its
+   rounding, so there the sweep starts where g - 1 is at least 1e-5. */
+static void ensure_growth_everywhere(motus_method method, int quartic) {
+    static const double zs[] = {1e-3, 3e-3, 1e-2, 3e-2, 0.1, 0.3, 0.5, 1, 1.5, 2, 2.5, 3, 5};
+    int i;
+    for (i = 0; i < (int)(sizeof zs / sizeof zs[0]); ++i) {
+        const double z = zs[i];
+        const motus_real h = (motus_real)(z / OSC_OMEGA);
+        const double zr = (double)h * OSC_OMEGA; /* z as rounded */
+        const double g = quartic ? sqrt(1 + zr * zr * zr * zr / 4) : sqrt(1 + zr * zr);
+        /* Enough steps to grow by e^2 if that stays representable, at most 20000. */
+        int steps = (int)fmin(20000, fmin(2 / log(g), 0.5 * log((double)REAL_MAX) / log(g)));
+        oscillator o;
+        double measured;
+        int k;
+        if (g - 1 < 1e-5 && EPS > 1e-10) continue; /* float */
+        oscillator_init(&o, method, 0);
+        if (steps < 1) steps = 1;
+        for (k = 0; k < steps; ++k) ENSURE_EQ_INT(motus_stepper_step(&o.s.stepper, &o.particle, 1, &o.forces, h), MOTUS_OK);
+        measured = pow(amplitude(&o.particle, OSC_OMEGA), 1.0 / steps);
+        printf("  %-15s z = %-6g %5d steps: growth per step %.12f, theory %.12f, off by %.2e\n",
+               motus_method_name(method), z, steps, measured, g, measured / g - 1);
+        ENSURE(amplitude(&o.particle, OSC_OMEGA) > 1);
+        /* Each step rounds ~6 times by eps/2 relative; averaged over the run, a few eps per step. */
+        ENSURE_NEAR(measured / g, 1, 4 * EPS);
+    }
+}
+
+TEST(explicit_euler_grows_at_every_dt) { ensure_growth_everywhere(MOTUS_EXPLICIT_EULER, 0); }
+TEST(midpoint_grows_at_every_dt) { ensure_growth_everywhere(MOTUS_MIDPOINT, 1); }
+
+TEST(exact_stepper_takes_no_spring) {
+    /* Its limit is +Inf because it has no spring to lose: a spring is refused, as its step refuses it. */
+    oscillator o;
+    motus_real dt = 0;
+    oscillator_init(&o, MOTUS_EXACT_LINEAR_DRAG, 0);
+    ENSURE_EQ_INT(motus_stepper_step(&o.s.stepper, &o.particle, 1, &o.forces, MOTUS_R(0.1)), MOTUS_ERROR_UNSUPPORTED);
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&o.s.stepper, &o.particle, 1, &o.forces, &dt), MOTUS_ERROR_UNSUPPORTED);
+    o.forces.spring_count = 0;
+    o.forces.linear_drag = 1000;
+    o.forces.gravity = motus_v2(0, -10);
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&o.s.stepper, &o.particle, 1, &o.forces, &dt), MOTUS_OK);
+    ENSURE(!motus_real_is_finite(dt) && dt > 0);
+    ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_EXACT_LINEAR_DRAG, 1e6f, 1, &dt), MOTUS_OK);
+    ENSURE(!motus_real_is_finite(dt) && dt > 0);
+}
+
+/* =================================================================================================
+   The limit API: max stable dt, substep counts, bad input
+   ================================================================================================= */
+TEST(max_stable_dt_is_limit_over_omega) {
+    int m;
+    for (m = 0; m < MOTUS_METHOD_COUNT; ++m) {
+        const motus_real limit = motus_method_stability_limit((motus_method)m);
+        motus_real dt = -1;
+        ENSURE_EQ_INT(motus_max_stable_dt((motus_method)m, 800, 2, &dt), MOTUS_OK); /* w = 20 */
+        if (motus_real_is_finite(limit)) ENSURE_NEAR(dt, limit / 20, 2 * EPS * (double)limit / 20);
+        else ENSURE(!motus_real_is_finite(dt) && dt > 0);
+        ENSURE_EQ_INT(motus_max_stable_dt((motus_method)m, 0, 2, &dt), MOTUS_OK); /* no spring: no limit */
+        ENSURE(!motus_real_is_finite(dt) && dt > 0);
+    }
+    {
+        /* A spring between two particles: the reduced mass m1*m2/(m1 + m2), w^2 = k*(1/m1 + 1/m2). */
+        motus_real dt;
+        ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_SEMI_IMPLICIT_EULER, 100, MOTUS_R(0.5) * 1 / MOTUS_R(1.5), &dt), MOTUS_OK);
+        ENSURE_NEAR(dt, 2 / sqrt(100 * 3.0), 4 * EPS * dt);
+    }
+}
+
+TEST(max_stable_dt_rejects_bad_input) {
+    static const struct {
+        int method;
+        double stiffness, mass;
+        motus_result expected;
+    } cases[] = {
+        {MOTUS_RK4, -1, 1, MOTUS_ERROR_INVALID_FORCES}, {MOTUS_RK4, 1, 0, MOTUS_ERROR_INVALID_MASS},
+        {MOTUS_RK4, 1, -1, MOTUS_ERROR_INVALID_MASS},   {MOTUS_METHOD_COUNT, 1, 1, MOTUS_ERROR_UNSUPPORTED},
+        {-1, 1, 1, MOTUS_ERROR_UNSUPPORTED},
+    };
+    motus_real dt = 42;
+    int i;
+    for (i = 0; i < (int)(sizeof cases / sizeof cases[0]); ++i)
+        ENSURE_EQ_INT(motus_max_stable_dt((motus_method)cases[i].method, (motus_real)cases[i].stiffness,
+                                          (motus_real)cases[i].mass, &dt), cases[i].expected);
+    ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_RK4, not_a_number(), 1, &dt), MOTUS_ERROR_NOT_FINITE);
+    ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_RK4, 1, not_a_number(), &dt), MOTUS_ERROR_NOT_FINITE);
+    ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_RK4, infinity(), 1, &dt), MOTUS_ERROR_NOT_FINITE);
+    ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_RK4, 1, infinity(), &dt), MOTUS_ERROR_NOT_FINITE);
+    ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_RK4, 1, 1, NULL), MOTUS_ERROR_NULL_POINTER);
+    ENSURE(dt == 42); /* untouched */
+}
+
+/* The fewest n with dt/n < safety*max_dt, in motus_real as the substepped step computes it. */
+static void ensure_minimal(motus_real dt, motus_real max_dt, motus_real safety, int n) {
+    const motus_real limit = safety * max_dt;
+    ENSURE(n >= 1);
+    ENSURE(dt / (motus_real)n < limit);
+    if (n > 1) ENSURE(!(dt / (motus_real)(n - 1) < limit));
+}
+
+TEST(substeps_for_is_minimal) {
+    static const double dts[] = {1e-6, 1.0 / 144, 1.0 / 60, 1.0 / 30, 0.1, 0.5, 2};
+    static const double max_dts[] = {1e-4, 0.001, 1.0 / 600, 0.0123, 1.0 / 60, 0.05, 1, 100};
+    static const double safeties[] = {1, 0.9, 0.5, 0.1};
+    int i, j, k, n;
+    for (i = 0; i < (int)(sizeof dts / sizeof dts[0]); ++i)
+        for (j = 0; j < (int)(sizeof max_dts / sizeof max_dts[0]); ++j)
+            for (k = 0; k < (int)(sizeof safeties / sizeof safeties[0]); ++k) {
+                const motus_real dt = (motus_real)dts[i], max_dt = (motus_real)max_dts[j];
+                const motus_real safety = (motus_real)safeties[k];
+                n = -1;
+                ENSURE_EQ_INT(motus_substeps_for(dt, max_dt, safety, &n), MOTUS_OK);
+                ensure_minimal(dt, max_dt, safety, n);
+            }
+    /* Exactly at the edge: dt/n == limit is not below it, so one more. */
+    ENSURE_EQ_INT(motus_substeps_for(1, MOTUS_R(0.25), 1, &n), MOTUS_OK);
+    ENSURE_EQ_INT(n, 5);
+    ENSURE_EQ_INT(motus_substeps_for(1, infinity(), 1, &n), MOTUS_OK);
+    ENSURE_EQ_INT(n, 1);
+}
+
+TEST(substeps_for_rejects_bad_input) {
+    int n = 42;
+    ENSURE_EQ_INT(motus_substeps_for(1, 0, 1, &n), MOTUS_ERROR_TOO_STIFF); /* explicit Euler on a spring */
+    ENSURE_EQ_INT(motus_substeps_for(1, (motus_real)1e-12, 1, &n), MOTUS_ERROR_TOO_STIFF); /* > INT_MAX/2 */
+    ENSURE_EQ_INT(motus_substeps_for(REAL_MAX, REAL_MIN, 1, &n), MOTUS_ERROR_TOO_STIFF); /* quotient overflows */
+    ENSURE_EQ_INT(motus_substeps_for(0, 1, 1, &n), MOTUS_ERROR_INVALID_TIME_STEP);
+    ENSURE_EQ_INT(motus_substeps_for(-1, 1, 1, &n), MOTUS_ERROR_INVALID_TIME_STEP);
+    ENSURE_EQ_INT(motus_substeps_for(not_a_number(), 1, 1, &n), MOTUS_ERROR_INVALID_TIME_STEP);
+    ENSURE_EQ_INT(motus_substeps_for(infinity(), 1, 1, &n), MOTUS_ERROR_INVALID_TIME_STEP);
+    ENSURE_EQ_INT(motus_substeps_for(1, not_a_number(), 1, &n), MOTUS_ERROR_NOT_FINITE);
+    ENSURE_EQ_INT(motus_substeps_for(1, -infinity(), 1, &n), MOTUS_ERROR_NOT_FINITE);
+    ENSURE_EQ_INT(motus_substeps_for(1, -1, 1, &n), MOTUS_ERROR_INVALID_ARGUMENT);
+    ENSURE_EQ_INT(motus_substeps_for(1, 1, not_a_number(), &n), MOTUS_ERROR_NOT_FINITE);
+    ENSURE_EQ_INT(motus_substeps_for(1, 1, 0, &n), MOTUS_ERROR_INVALID_ARGUMENT);
+    ENSURE_EQ_INT(motus_substeps_for(1, 1, MOTUS_R(1.01), &n), MOTUS_ERROR_INVALID_ARGUMENT);
+    ENSURE_EQ_INT(motus_substeps_for(1, 1, -1, &n), MOTUS_ERROR_INVALID_ARGUMENT);
+    ENSURE_EQ_INT(motus_substeps_for(1, 1, 1, NULL), MOTUS_ERROR_NULL_POINTER);
+    ENSURE_EQ_INT(n, 42);
+    ENSURE(strlen(motus_result_string(MOTUS_ERROR_TOO_STIFF)) > 20);
+    ENSURE(strlen(motus_result_string(MOTUS_ERROR_INVALID_ARGUMENT)) > 20);
+    ENSURE(strcmp(motus_result_string(MOTUS_ERROR_TOO_STIFF), motus_result_string(MOTUS_ERROR_INVALID_ARGUMENT)));
+    ENSURE(strcmp(motus_result_string(MOTUS_RESULT_COUNT), "unknown motus_result value") == 0);
+}
+
+/* =================================================================================================
+   Substepping
+   ================================================================================================= */
+TEST(stepper_max_stable_dt_bounds_the_springs) {
+    /* A chain of 6 equal particles (1 kg) on 5 equal springs (k = 100) with its first end on an immovable
+       particle: the Gershgorin bound is 4k/m (the chain's highest mode tends to it); one anchored spring
+       gives k/m, one spring between two particles k*(1/m1 + 1/m2). */
+    test_stepper s;
+    motus_particle p[CAPACITY];
+    motus_spring springs[CAPACITY];
+    motus_forces f;
+    motus_real dt = 0;
+    int i;
+    memset(&f, 0, sizeof f);
+    memset(springs, 0, sizeof springs);
+    stepper_init(&s, MOTUS_SEMI_IMPLICIT_EULER);
+    ENSURE_EQ_INT(motus_particle_init_immovable(&p[0], motus_v2(0, 0)), MOTUS_OK);
+    for (i = 1; i < 7; ++i) {
+        ENSURE_EQ_INT(motus_particle_init(&p[i], motus_v2((motus_real)i, 0), 1), MOTUS_OK);
+        springs[i - 1].a = i - 1, springs[i - 1].b = i, springs[i - 1].stiffness = 100;
+    }
+    f.springs = springs;
+    f.spring_count = 6;
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 7, &f, &dt), MOTUS_OK);
+    ENSURE_NEAR(dt, 2 / sqrt(400.0), 4 * EPS);
+    f.spring_count = 1; /* immovable 0 to 1: like an anchor */
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 7, &f, &dt), MOTUS_OK);
+    ENSURE_NEAR(dt, 2 / sqrt(100.0), 4 * EPS);
+    f.springs = springs + 1; /* 1 to 2, both free: k*(1 + 1) */
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 7, &f, &dt), MOTUS_OK);
+    ENSURE_NEAR(dt, 2 / sqrt(200.0), 4 * EPS);
+    /* Linear drag alone: g*h < 2 for semi-implicit Euler. */
+    f.spring_count = 0;
+    f.linear_drag = 40;
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 7, &f, &dt), MOTUS_OK);
+    ENSURE_NEAR(dt, 2 / 40.0, 4 * EPS);
+    f.linear_drag = 0;
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 7, &f, &dt), MOTUS_OK);
+    ENSURE(!motus_real_is_finite(dt) && dt > 0);
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 7, NULL, &dt), MOTUS_OK);
+    ENSURE(!motus_real_is_finite(dt) && dt > 0);
+}
+
+TEST(stepper_max_stable_dt_rejects_bad_input) {
+    test_stepper s;
+    motus_particle p[2], before[2];
+    motus_spring spring;
+    motus_forces f;
+    motus_real dt = 42;
+    memset(&f, 0, sizeof f);
+    memset(&spring, 0, sizeof spring);
+    stepper_init(&s, MOTUS_RK4);
+    ENSURE_EQ_INT(motus_particle_init(&p[0], motus_v2(0, 0), 1), MOTUS_OK);
+    ENSURE_EQ_INT(motus_particle_init(&p[1], motus_v2(1, 0), 1), MOTUS_OK);
+    spring.a = 0, spring.b = 1, spring.stiffness = 10;
+    f.springs = &spring;
+    f.spring_count = 1;
+    memcpy(before, p, sizeof p);
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(NULL, p, 2, &f, &dt), MOTUS_ERROR_NULL_POINTER);
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, NULL, 2, &f, &dt), MOTUS_ERROR_NULL_POINTER);
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 2, &f, NULL), MOTUS_ERROR_NULL_POINTER);
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, -1, &f, &dt), MOTUS_ERROR_INVALID_COUNT);
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, CAPACITY + 1, &f, &dt), MOTUS_ERROR_INVALID_COUNT);
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 1, &f, &dt), MOTUS_ERROR_INVALID_FORCES); /* b = 1 */
+    spring.stiffness = -1;
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 2, &f, &dt), MOTUS_ERROR_INVALID_FORCES);
+    spring.stiffness = not_a_number();
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 2, &f, &dt), MOTUS_ERROR_NOT_FINITE);
+    spring.stiffness = 10;
+    p[1].inverse_mass = -1;
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 2, &f, &dt), MOTUS_ERROR_INVALID_MASS);
+    p[1].inverse_mass = not_a_number();
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 2, &f, &dt), MOTUS_ERROR_NOT_FINITE);
+    p[1].inverse_mass = 1;
+    f.quadratic_drag = 1;
+    p[1].velocity = motus_v2(infinity(), 0);
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 2, &f, &dt), MOTUS_ERROR_NOT_FINITE);
+    p[1].velocity = motus_v2(0, 0);
+    ENSURE(dt == 42);
+    ENSURE(same_bytes(p, before, sizeof p));
+    s.stepper.method = MOTUS_METHOD_COUNT;
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 2, &f, &dt), MOTUS_ERROR_UNSUPPORTED);
+}
+
+/* A stiff spring at a game's dt: k = 1e5 N/m on 1 kg, w = 316 rad/s, w*dt = 5.3 at 60 Hz, beyond every
+   method's limit. Unsubstepped it explodes; substepped (safety 0.9) it stays on its circle, and the count
+   is the least that puts each substep under 0.9 of the limit. */
+TEST(substepping_keeps_a_stiff_spring_bounded) {
+    const motus_real dt = (motus_real)(1.0 / 60.0), k = 100000;
+    const double omega = sqrt(1e5);
+    int m;
+    for (m = 0; m < MOTUS_METHOD_COUNT; ++m) {
+        oscillator plain, sub;
+        motus_real max_dt = 0;
+        double largest_plain = 1, largest_sub = 1;
+        int frame, n = 0, taken = 0, failed = 0;
+        if (!has_finite_limit((motus_method)m)) continue;
+        oscillator_init(&plain, (motus_method)m, 0);
+        oscillator_init(&sub, (motus_method)m, 0);
+        plain.spring.stiffness = sub.spring.stiffness = k;
+        plain.particle.inverse_mass = sub.particle.inverse_mass = 1;
+        ENSURE_EQ_INT(motus_stepper_max_stable_dt(&sub.s.stepper, &sub.particle, 1, &sub.forces, &max_dt), MOTUS_OK);
+        ENSURE_NEAR(max_dt, (double)motus_method_stability_limit((motus_method)m) / omega, 4 * EPS * (double)max_dt);
+        ENSURE_EQ_INT(motus_substeps_for(dt, max_dt, MOTUS_R(0.9), &n), MOTUS_OK);
+        ensure_minimal(dt, max_dt, MOTUS_R(0.9), n);
+        for (frame = 0; frame < 600; ++frame) { /* 10 s */
+            if (!failed && motus_stepper_step(&plain.s.stepper, &plain.particle, 1, &plain.forces, dt) != MOTUS_OK)
+                failed = 1, largest_plain = HUGE_VAL;
+            if (!failed && amplitude(&plain.particle, omega) > largest_plain)
+                largest_plain = amplitude(&plain.particle, omega);
+            ENSURE_EQ_INT(motus_stepper_step_substepped(&sub.s.stepper, &sub.particle, 1, &sub.forces, dt,
+                                                        MOTUS_R(0.9), 100, &taken), MOTUS_OK);
+            ENSURE_EQ_INT(taken, n);
+            if (amplitude(&sub.particle, omega) > largest_sub) largest_sub = amplitude(&sub.particle, omega);
+        }
+        printf("  %-20s w*dt = %.2f: %d substeps of w*h = %.3f (limit %.4f); largest amplitude %.3g without, "
+               "%.4f with\n", motus_method_name((motus_method)m), omega * (double)dt, n, omega * (double)dt / n,
+               (double)motus_method_stability_limit((motus_method)m), largest_plain, largest_sub);
+        ENSURE(largest_plain > 1e6);
+        /* Bounded, not growing. How far a symplectic method's amplitude wanders below the limit depends
+           on z: semi-implicit Euler keeps x^2 + y^2 - z*x*y (y = v/w) fixed, an ellipse on which the
+           amplitude reaches 1/sqrt(1 - z/2) from (1, 0): 2.87 at z = 1.757, at most 3.16 at safety 0.9. */
+        ENSURE(largest_sub < 3.2);
+        if (m == MOTUS_SEMI_IMPLICIT_EULER) {
+            const double z = omega * (double)dt / n;
+            ENSURE_NEAR(largest_sub, 1 / sqrt(1 - z / 2), 1e-3);
+        }
+    }
+}
+
+TEST(substepping_refuses_what_it_cannot_keep_stable) {
+    int m;
+    for (m = 0; m < MOTUS_METHOD_COUNT; ++m) {
+        oscillator o;
+        motus_particle before;
+        motus_stepper stepper_before;
+        int taken = 42;
+        oscillator_init(&o, (motus_method)m, 0);
+        o.spring.stiffness = 100000;
+        o.particle.velocity = motus_v2(1, 2);
+        before = o.particle;
+        stepper_before = o.s.stepper;
+        /* Explicit Euler and midpoint: no count is enough; the exact stepper: no spring; the others need 3
+           or more at 60 Hz and are allowed 2. */
+        ENSURE_EQ_INT(motus_stepper_step_substepped(&o.s.stepper, &o.particle, 1, &o.forces, (motus_real)(1.0 / 60.0),
+                                                    MOTUS_R(0.9), 2, &taken),
+                      m == MOTUS_EXACT_LINEAR_DRAG ? MOTUS_ERROR_UNSUPPORTED : MOTUS_ERROR_TOO_STIFF);
+        ENSURE_EQ_INT(taken, 0);
+        ENSURE(same_bytes(&o.particle, &before, sizeof before));
+        ENSURE(same_bytes(&o.s.stepper, &stepper_before, sizeof stepper_before));
+        /* Bad input: checked before the first substep, nothing written. */
+        ENSURE_EQ_INT(motus_stepper_step_substepped(&o.s.stepper, &o.particle, 1, &o.forces, 0, 1, 10, &taken),
+                      MOTUS_ERROR_INVALID_TIME_STEP);
+        ENSURE_EQ_INT(motus_stepper_step_substepped(&o.s.stepper, &o.particle, 1, &o.forces, 1, 1, 0, &taken),
+                      MOTUS_ERROR_INVALID_ARGUMENT);
+        ENSURE_EQ_INT(motus_stepper_step_substepped(&o.s.stepper, &o.particle, 1, &o.forces, 1, 2, 10, &taken),
+                      m == MOTUS_EXACT_LINEAR_DRAG ? MOTUS_ERROR_UNSUPPORTED : MOTUS_ERROR_INVALID_ARGUMENT);
+        ENSURE_EQ_INT(motus_stepper_step_substepped(NULL, &o.particle, 1, &o.forces, 1, 1, 10, &taken),
+                      MOTUS_ERROR_NULL_POINTER);
+        ENSURE_EQ_INT(motus_stepper_step_substepped(&o.s.stepper, &o.particle, -1, &o.forces, 1, 1, 10, &taken),
+                      MOTUS_ERROR_INVALID_COUNT);
+        o.particle.position.x = not_a_number();
+        before = o.particle;
+        o.spring.stiffness = 1;
+        ENSURE_EQ_INT(motus_stepper_step_substepped(&o.s.stepper, &o.particle, 1, &o.forces, (motus_real)(1.0 / 60.0),
+                                                    1, 10, &taken),
+                      m == MOTUS_EXACT_LINEAR_DRAG ? MOTUS_ERROR_UNSUPPORTED
+                      : has_finite_limit((motus_method)m) ? MOTUS_ERROR_NOT_FINITE : MOTUS_ERROR_TOO_STIFF);
+        ENSURE_EQ_INT(taken, 0);
+        ENSURE(same_bytes(&o.particle, &before, sizeof before));
+        ENSURE(same_bytes(&o.s.stepper, &stepper_before, sizeof stepper_before));
+    }
+}
+
+/* Damping and drag lower the limit; the effective frequency of STABILITY LIMITS keeps each method stable
+   at 0.99 of the dt it gives, over damping ratios g/w from 0.1 to 100, with the real stepper. For
+   semi-implicit Euler the formula is exact, so 1.02 of it grows. */
+TEST(damping_lowers_the_limit_and_stays_safe) {
+    static const double ratios[] = {0.1, 0.5, 1, 2, 10, 100}; /* g/w */
+    int m, i;
+    for (m = 0; m < MOTUS_METHOD_COUNT; ++m) {
+        if (!has_finite_limit((motus_method)m)) continue;
+        for (i = 0; i < (int)(sizeof ratios / sizeof ratios[0]); ++i) {
+            /* g = c/m with the oscillator's mass */
+            const motus_real c = (motus_real)(ratios[i] * OSC_OMEGA * (double)OSC_MASS);
+            oscillator o;
+            motus_real max_dt = 0;
+            double final;
+            oscillator_init(&o, (motus_method)m, c);
+            ENSURE_EQ_INT(motus_stepper_max_stable_dt(&o.s.stepper, &o.particle, 1, &o.forces, &max_dt), MOTUS_OK);
+            ENSURE(max_dt < motus_method_stability_limit((motus_method)m) / (motus_real)OSC_OMEGA);
+            final = final_amplitude((motus_method)m, MOTUS_R(0.99) * max_dt, 40000, c);
+            /* Damped and stable: it decays (overdamped, slowly: the slow mode at the rate w^2/g). Unstable,
+               the fast mode would grow by orders of magnitude in 40000 steps, as the 1.02 case shows. */
+            if (!(final < 1))
+                printf("  %s g/w = %g: amplitude %.3g after 40000 steps of 0.99 max dt\n",
+                       motus_method_name((motus_method)m), ratios[i], final);
+            ENSURE(final < 1);
+            if (m == MOTUS_SEMI_IMPLICIT_EULER)
+                ENSURE(final_amplitude((motus_method)m, MOTUS_R(1.02) * max_dt, 40000, c) > 1000);
+        }
+    }
+}
+
+static const motus_test_case TESTS[] = {
+    TEST_CASE(limits_table),
+    TEST_CASE(bisect_thresholds),
+    TEST_CASE(explicit_euler_grows_at_every_dt),
+    TEST_CASE(midpoint_grows_at_every_dt),
+    TEST_CASE(exact_stepper_takes_no_spring),
+    TEST_CASE(max_stable_dt_is_limit_over_omega),
+    TEST_CASE(max_stable_dt_rejects_bad_input),
+    TEST_CASE(substeps_for_is_minimal),
+    TEST_CASE(substeps_for_rejects_bad_input),
+    TEST_CASE(stepper_max_stable_dt_bounds_the_springs),
+    TEST_CASE(stepper_max_stable_dt_rejects_bad_input),
+    TEST_CASE(substepping_keeps_a_stiff_spring_bounded),
+    TEST_CASE(substepping_refuses_what_it_cannot_keep_stable),
+    TEST_CASE(damping_lowers_the_limit_and_stays_safe),
+};
+
+int main(int argc, char **argv) { return motus_test_main(argc, argv, TESTS, TEST_COUNT(TESTS)); }
