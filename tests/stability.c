@@ -526,6 +526,303 @@ TEST(damping_lowers_the_limit_and_stays_safe) {
     }
 }
 
+/* =================================================================================================
+   dt from 1e-7 s to 1 s
+   =================================================================================================
+   1000 steps of each dt, from rest at the origin (so no digits go to a large position; far from the origin
+   is another test's business). Free fall under g = 9.81: semi-implicit Euler lands ahead of the exact
+   -g*t^2/2 by g*t*h/2 (see motus_particle_step), explicit Euler behind by as much, every other method on it
+   (second order and up integrate a constant acceleration exactly); what is left is rounding: n*k*eps of
+   |y|. The oscillator (w = 1 rad/s, from x = 1): the error stays within the method's promise C*t*h^p (its
+   order p) plus rounding, and the state finite, except where explicit Euler and midpoint grow, as they
+   must, by their growth factor (in float, 1000 steps at h = 1 overflow: reported, state kept). */
+static const double DTS[] = {1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1};
+
+TEST(dt_extremes_free_fall) {
+    const int steps = 1000;
+    int m, i, k;
+    for (m = 0; m < MOTUS_METHOD_COUNT; ++m) {
+        double worst = 0;
+        for (i = 0; i < (int)(sizeof DTS / sizeof DTS[0]); ++i) {
+            const motus_real h = (motus_real)DTS[i];
+            const double t = steps * (double)h, g = (double)MOTUS_R(9.81);
+            double expected, error;
+            test_stepper s;
+            motus_particle p;
+            motus_forces f;
+            memset(&f, 0, sizeof f);
+            f.gravity = motus_v2(0, MOTUS_R(-9.81));
+            stepper_init(&s, (motus_method)m);
+            ENSURE_EQ_INT(motus_particle_init(&p, motus_v2(0, 0), 1), MOTUS_OK);
+            for (k = 0; k < steps; ++k) ENSURE_EQ_INT(motus_stepper_step(&s.stepper, &p, 1, &f, h), MOTUS_OK);
+            expected = -g * t * t / 2;
+            if (m == MOTUS_SEMI_IMPLICIT_EULER) expected -= g * t * (double)h / 2;
+            if (m == MOTUS_EXPLICIT_EULER) expected += g * t * (double)h / 2;
+            error = fabs((double)p.position.y - expected) / fabs(expected);
+            if (error / (steps * EPS) > worst) worst = error / (steps * EPS);
+            ENSURE(p.position.x == 0);
+            ENSURE_NEAR(p.position.y, expected, 4 * steps * EPS * fabs(expected));
+            ENSURE_NEAR(p.velocity.y, -g * t, 4 * steps * EPS * g * t);
+        }
+        printf("  %-20s free fall, dt 1e-7..1 s: relative error at most %.2f * n * eps\n",
+               motus_method_name((motus_method)m), worst);
+    }
+}
+
+TEST(dt_extremes_oscillator) {
+    const int steps = 1000;
+    int m, i, k;
+    for (m = 0; m < MOTUS_EXACT_LINEAR_DRAG; ++m) {
+        const int order = motus_method_order((motus_method)m);
+        const int grows_always = motus_method_stability_limit((motus_method)m) == 0;
+        printf("  %-20s", motus_method_name((motus_method)m));
+        for (i = 0; i < (int)(sizeof DTS / sizeof DTS[0]); ++i) {
+            const motus_real h = (motus_real)DTS[i];
+            const double t = steps * (double)h;
+            double worst = 0, promise = t * pow((double)h, order), rounding = 16 * steps * EPS;
+            motus_result result = MOTUS_OK;
+            oscillator o;
+            oscillator_init(&o, (motus_method)m, 0);
+            o.particle.inverse_mass = 1;
+            o.spring.stiffness = 1; /* w = 1 */
+            for (k = 1; k <= steps && result == MOTUS_OK; ++k) {
+                motus_particle before = o.particle;
+                result = motus_stepper_step(&o.s.stepper, &o.particle, 1, &o.forces, h);
+                if (result != MOTUS_OK) {
+                    /* Only a method that grows may overflow, and then the state is the one before. */
+                    ENSURE(grows_always && EPS > 1e-10);
+                    ENSURE_EQ_INT(result, MOTUS_ERROR_OVERFLOW);
+                    ENSURE(same_bytes(&before, &o.particle, sizeof before));
+                } else {
+                    const double tk = k * (double)h;
+                    const double ex = (double)o.particle.position.x - cos(tk), ev = (double)o.particle.velocity.x + sin(tk);
+                    const double e = sqrt(ex * ex + ev * ev);
+                    if (e > worst) worst = e;
+                }
+            }
+            ENSURE(motus_particle_check(&o.particle) == MOTUS_OK);
+            printf(" %8.1e", worst);
+            if (grows_always && result != MOTUS_OK) continue;
+            if (grows_always && promise > 0.1) {
+                /* Past the asymptotic range: the amplitude is the growth factor to the n-th power. */
+                const double z = (double)h, g = m == MOTUS_EXPLICIT_EULER ? sqrt(1 + z * z) : sqrt(1 + z * z * z * z / 4);
+                ENSURE_NEAR(log(amplitude(&o.particle, 1)) / (steps * log(g)), 1, 1e-3);
+            } else if (promise > 1) {
+                ENSURE(amplitude(&o.particle, 1) < 3); /* stable, bounded (RK4 and Forest-Ruth decay or wobble) */
+            } else {
+                ENSURE(worst <= promise + rounding);
+            }
+        }
+        printf("  (error, dt = 1e-7 .. 1)\n");
+    }
+}
+
+/* =================================================================================================
+   10^7 steps
+   =================================================================================================
+   The oscillator (w = 1 rad/s, from x = 1) at h = 0.1: 10^7 steps, 10^6 s, 159155 periods. The relative
+   energy error |E - E0|/E0, E = (x^2 + v^2)/2, over the first and the last 10% of the run:
+   - semi-implicit Euler keeps x^2 + v^2 - h*x*v fixed, on which E/E0 ranges over 1/(1 +- h/2): the error
+     stays within (h/2)/(1 - h/2) = 5.263% forever (measured: 5.263% in the first and the last 10%);
+   - velocity Verlet keeps x^2 + v^2/(1 - h^2/4) fixed: E/E0 in [1 - h^2/4, 1], error within 0.25%;
+   - in float, rounding adds a little on top (measured: 1.2e-5 of E0 for velocity Verlet), no drift;
+   - explicit Euler multiplies E by 1 + h^2 per step: 100 times larger within 463 steps, and in float it
+     overflows (reported, state kept) long before the end.
+   About 0.6 s per precision at -O2 (the two 10^7-step runs). */
+static void long_run(motus_method method, double *first, double *last, double *final_energy) {
+    const int steps = 10000000, window = steps / 10;
+    oscillator o;
+    int i;
+    *first = *last = 0;
+    oscillator_init(&o, method, 0);
+    o.particle.inverse_mass = 1;
+    o.spring.stiffness = 1;
+    for (i = 0; i < steps; ++i) {
+        double x, v, e;
+        if (motus_stepper_step(&o.s.stepper, &o.particle, 1, &o.forces, MOTUS_R(0.1)) != MOTUS_OK) {
+            ENSURE(!"step failed");
+            break;
+        }
+        if (i >= window && i < steps - window) continue;
+        x = (double)o.particle.position.x, v = (double)o.particle.velocity.x;
+        e = fabs((x * x + v * v) - 1);
+        if (i < window && e > *first) *first = e;
+        if (i >= steps - window && e > *last) *last = e;
+    }
+    *final_energy = amplitude(&o.particle, 1);
+    *final_energy *= *final_energy;
+    printf("  %-20s 10^7 steps of w*h = 0.1: energy error first 10%% %.4g, last 10%% %.4g, final E/E0 %.6f\n",
+           motus_method_name(method), *first, *last, *final_energy);
+}
+
+TEST(ten_million_steps) {
+    double first, last, final_energy;
+    long_run(MOTUS_SEMI_IMPLICIT_EULER, &first, &last, &final_energy);
+    /* The wobble: within (h/2)/(1 - h/2) relative of E0 on the invariant ellipse. */
+    ENSURE(first <= 0.05 / (1 - 0.05) + 1e-4);
+    ENSURE(last <= 0.05 / (1 - 0.05) + 1e-4);
+    ENSURE(first >= 0.05 / (1 - 0.05) - 1e-4); /* it does reach the edge of its ellipse */
+    ENSURE(last <= first + 1e-4);
+    long_run(MOTUS_VELOCITY_VERLET, &first, &last, &final_energy);
+    ENSURE(first <= 0.01 / 4 + 1e-4);
+    ENSURE(last <= 0.01 / 4 + 1e-4);
+    ENSURE(last <= first + 1e-4);
+    ENSURE_NEAR(final_energy, 1, 0.01 / 4 + 1e-4);
+    {
+        /* Explicit Euler: E grows by exactly 1 + h^2 per step (to rounding). */
+        oscillator o;
+        int i;
+        motus_result result = MOTUS_OK;
+        oscillator_init(&o, MOTUS_EXPLICIT_EULER, 0);
+        o.particle.inverse_mass = 1;
+        o.spring.stiffness = 1;
+        for (i = 0; i < 463; ++i) ENSURE_EQ_INT(motus_stepper_step(&o.s.stepper, &o.particle, 1, &o.forces, MOTUS_R(0.1)), MOTUS_OK);
+        ENSURE_NEAR(log(amplitude(&o.particle, 1)) * 2 / (463 * log(1 + (double)MOTUS_R(0.1) * (double)MOTUS_R(0.1))), 1, 1e-4);
+        ENSURE(amplitude(&o.particle, 1) * amplitude(&o.particle, 1) > 100);
+        for (i = 463; i < 10000000 && result == MOTUS_OK; ++i) {
+            motus_particle before = o.particle;
+            result = motus_stepper_step(&o.s.stepper, &o.particle, 1, &o.forces, MOTUS_R(0.1));
+            if (result != MOTUS_OK) ENSURE(same_bytes(&before, &o.particle, sizeof before));
+        }
+        /* In float it stops at |x| ~ 2e19, where the spring's |d|^2 overflows, not x itself. */
+        printf("  %-20s stopped at step %d: %s; |x| = %.3g, |v| = %.3g\n", "explicit_euler", i,
+               motus_result_string(result), fabs((double)o.particle.position.x), fabs((double)o.particle.velocity.x));
+        ENSURE_EQ_INT(result, MOTUS_ERROR_OVERFLOW);
+        ENSURE(motus_particle_check(&o.particle) == MOTUS_OK);
+    }
+}
+
+/* =================================================================================================
+   Masses from 1e-20 to 1e20, and inverse mass 0
+   ================================================================================================= */
+TEST(masses_from_1e_minus_20_to_1e20) {
+    /* Every mass in range is accepted, its inverse is the correctly rounded 1/m, and a force of m newtons
+       gives 1 m/s^2: v = h after one step, to a few eps. */
+    static const double masses[] = {1e-20, 1e-15, 1e-10, 1e-5, 1, 1e5, 1e10, 1e15, 1e20};
+    int i;
+    for (i = 0; i < (int)(sizeof masses / sizeof masses[0]); ++i) {
+        const motus_real m = (motus_real)masses[i], h = MOTUS_R(0.125);
+        motus_particle p;
+        memset(&p, 0, sizeof p);
+        ENSURE_EQ_INT(motus_particle_init(&p, motus_v2(1, 2), m), MOTUS_OK);
+        ENSURE(p.inverse_mass == MOTUS_R(1.0) / m);
+        ENSURE(p.inverse_mass >= (motus_real)REAL_MIN); /* normal: all its digits */
+        ENSURE_NEAR(motus_particle_mass(&p) / m, 1, EPS);
+        ENSURE_EQ_INT(motus_particle_add_force(&p, motus_v2(m, -m)), MOTUS_OK);
+        ENSURE_EQ_INT(motus_particle_step(&p, h), MOTUS_OK);
+        ENSURE_NEAR(p.velocity.x, h, 2 * EPS * (double)h);
+        ENSURE_NEAR(p.velocity.y, -h, 2 * EPS * (double)h);
+    }
+}
+
+TEST(masses_at_the_edges_of_the_format) {
+    /* The limits are the format's, not 1e+-20: a mass whose inverse overflows is refused (INVALID_MASS);
+       a mass so large that its inverse is subnormal is accepted, with fewer digits in the inverse.
+       Float: 1/1e-38 = 1e38 fits, 1/1e-39 (a subnormal mass) does not; 1/3e38 = 3.3e-39 is subnormal
+       (21 bits instead of 24). Double: the same at 1e-308 / 1e-309 and 1e308. */
+#ifdef MOTUS_DOUBLE
+    const motus_real tiny_ok = 1e-308, tiny_bad = 1e-309, huge = 1e308;
+#else
+    const motus_real tiny_ok = 1e-38f, tiny_bad = 1e-39f, huge = 3e38f;
+#endif
+    motus_particle p, before;
+    double roundtrip;
+    memset(&p, 0, sizeof p);
+    ENSURE_EQ_INT(motus_particle_init(&p, motus_v2(0, 0), tiny_ok), MOTUS_OK);
+    ENSURE(motus_real_is_finite(p.inverse_mass));
+    before = p;
+    ENSURE_EQ_INT(motus_particle_init(&p, motus_v2(0, 0), tiny_bad), MOTUS_ERROR_INVALID_MASS);
+    ENSURE(same_bytes(&p, &before, sizeof p));
+    ENSURE_EQ_INT(motus_particle_init(&p, motus_v2(0, 0), REAL_MAX), MOTUS_OK);
+    ENSURE_EQ_INT(motus_particle_init(&p, motus_v2(0, 0), huge), MOTUS_OK);
+    ENSURE(p.inverse_mass > 0 && p.inverse_mass < (motus_real)REAL_MIN); /* subnormal */
+    roundtrip = fabs((double)motus_particle_mass(&p) / (double)huge - 1);
+    printf("  mass %g: inverse %g is subnormal; 1/(1/m) is off by %.2g relative (eps %.2g)\n", (double)huge,
+           (double)p.inverse_mass, roundtrip, EPS);
+    ENSURE(roundtrip < 1e-5);
+}
+
+TEST(spring_between_masses_1e_minus_20_and_1e20) {
+    /* A spring of k = 1e-20 N/m from a 1e-20 kg particle to a 1e20 kg one: w^2 = k*(1e20 + 1e-20) = 1, so
+       the light one swings with period 2*pi and the heavy one stays put (its acceleration is 1e-40 m/s^2,
+       below float's normal range: flushed or subnormal, and lost against its position either way). The
+       stability bound sees the same w: max dt = 2/w for semi-implicit Euler. */
+    test_stepper s;
+    motus_particle p[2];
+    motus_spring spring;
+    motus_forces f;
+    motus_real max_dt = 0;
+    const motus_real h = MOTUS_R(0.001);
+    double largest_error = 0;
+    int k;
+    memset(&f, 0, sizeof f);
+    memset(&spring, 0, sizeof spring);
+    stepper_init(&s, MOTUS_VELOCITY_VERLET);
+    ENSURE_EQ_INT(motus_particle_init(&p[0], motus_v2(1, 0), (motus_real)1e-20), MOTUS_OK);
+    ENSURE_EQ_INT(motus_particle_init(&p[1], motus_v2(0, 0), (motus_real)1e20), MOTUS_OK);
+    spring.a = 0, spring.b = 1, spring.stiffness = (motus_real)1e-20;
+    f.springs = &spring;
+    f.spring_count = 1;
+    ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, p, 2, &f, &max_dt), MOTUS_OK);
+    ENSURE_NEAR(max_dt, 2, 8 * EPS);
+    for (k = 1; k <= 6283; ++k) { /* one period */
+        double e;
+        ENSURE_EQ_INT(motus_stepper_step(&s.stepper, p, 2, &f, h), MOTUS_OK);
+        e = fabs((double)p[0].position.x - cos(k * (double)h));
+        if (e > largest_error) largest_error = e;
+    }
+    printf("  light end: largest error %.3g over a period; heavy end moved %.3g m\n", largest_error,
+           (double)p[1].position.x);
+    ENSURE(largest_error < 1e-5 + 1e4 * EPS); /* h^2/24 per radian of phase, plus rounding */
+    ENSURE(fabs((double)p[1].position.x) < 1e-30);
+    ENSURE(p[1].position.y == 0 && p[1].velocity.y == 0);
+}
+
+TEST(immovable_under_gravity_springs_and_drag) {
+    /* Gravity is an acceleration, but an immovable particle gets none ("Forces: one model"): it stays where
+       it is, bit for bit, in every method, with gravity, both drags, a stiff damped spring to a free
+       particle, an attractor and an accumulated force on it. The spring pulls both ways: the free end
+       swings about the immovable one. The exact stepper takes gravity and linear drag only. */
+    int m, k;
+    for (m = 0; m < MOTUS_METHOD_COUNT; ++m) {
+        test_stepper s;
+        motus_particle p[2], before;
+        motus_spring spring;
+        motus_forces f;
+        motus_vec2 spring_force;
+        memset(&f, 0, sizeof f);
+        memset(&spring, 0, sizeof spring);
+        stepper_init(&s, (motus_method)m);
+        ENSURE_EQ_INT(motus_particle_init_immovable(&p[0], motus_v2(3, 4)), MOTUS_OK);
+        ENSURE_EQ_INT(motus_particle_init(&p[1], motus_v2(5, 4), 2), MOTUS_OK);
+        ENSURE_EQ_INT(motus_particle_add_force(&p[0], motus_v2(1e6f, -1e6f)), MOTUS_OK);
+        f.gravity = motus_v2(0, MOTUS_R(-9.81));
+        f.linear_drag = MOTUS_R(0.5);
+        if (m != MOTUS_EXACT_LINEAR_DRAG) {
+            f.quadratic_drag = MOTUS_R(0.1);
+            f.attractor_strength = 10;
+            f.attractor_position = motus_v2(-10, -10);
+            spring.a = 0, spring.b = 1, spring.stiffness = 50, spring.damping = 1, spring.rest_length = 1;
+            f.springs = &spring;
+            f.spring_count = 1;
+        }
+        before = p[0];
+        for (k = 0; k < 600; ++k)
+            ENSURE_EQ_INT(motus_stepper_step(&s.stepper, p, 2, &f, (motus_real)(1.0 / 600.0)), MOTUS_OK);
+        ENSURE(same_bytes(&p[0], &before, sizeof before));
+        /* The free end fell and was held: within a few metres of the fixed one, below it. */
+        spring_force = motus_vec2_sub(p[1].position, p[0].position);
+        if (m != MOTUS_EXACT_LINEAR_DRAG) ENSURE(motus_vec2_length(spring_force) < 3 && p[1].position.y < 4);
+        else ENSURE(p[1].position.y < 4 - 1);
+        {
+            /* motus_particle_step too: the force accumulates, the particle stays. */
+            motus_particle q = before;
+            ENSURE_EQ_INT(motus_particle_step(&q, MOTUS_R(0.5)), MOTUS_OK);
+            ENSURE(same_bytes(&q, &before, sizeof q));
+        }
+    }
+}
+
 static const motus_test_case TESTS[] = {
     TEST_CASE(limits_table),
     TEST_CASE(bisect_thresholds),
@@ -541,6 +838,13 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(substepping_keeps_a_stiff_spring_bounded),
     TEST_CASE(substepping_refuses_what_it_cannot_keep_stable),
     TEST_CASE(damping_lowers_the_limit_and_stays_safe),
+    TEST_CASE(dt_extremes_free_fall),
+    TEST_CASE(dt_extremes_oscillator),
+    TEST_CASE(ten_million_steps),
+    TEST_CASE(masses_from_1e_minus_20_to_1e20),
+    TEST_CASE(masses_at_the_edges_of_the_format),
+    TEST_CASE(spring_between_masses_1e_minus_20_and_1e20),
+    TEST_CASE(immovable_under_gravity_springs_and_drag),
 };
 
 int main(int argc, char **argv) { return motus_test_main(argc, argv, TESTS, TEST_COUNT(TESTS)); }
