@@ -823,6 +823,63 @@ TEST(immovable_under_gravity_springs_and_drag) {
     }
 }
 
+/* A chain of 6 particles (1 kg) on zero-length springs (k = 1e4 N/m) hanging from an immovable one: its
+   highest mode has w^2 = 4k*sin^2(11*pi/26) = 3.88k (fixed-free chain of 6), above the 2k of any one
+   spring. A step sized for one spring (0.95*limit/sqrt(2k)) blows the chain up; the Gershgorin bound
+   (w^2 <= 4k) sizes it right, and substepping at 60 Hz (w*dt = 3.3) keeps it bounded. */
+TEST(chain_needs_the_whole_bound) {
+    int m;
+    for (m = 0; m < MOTUS_METHOD_COUNT; ++m) {
+        test_stepper s;
+        motus_particle start[7], p[7];
+        motus_spring springs[6];
+        motus_forces f;
+        motus_real max_dt = 0, naive;
+        double largest = 0;
+        int i, k, taken = 0;
+        if (!has_finite_limit((motus_method)m)) continue;
+        memset(&f, 0, sizeof f);
+        memset(springs, 0, sizeof springs);
+        ENSURE_EQ_INT(motus_particle_init_immovable(&start[0], motus_v2(0, 0)), MOTUS_OK);
+        for (i = 1; i < 7; ++i) {
+            /* Displaced in both axes with a sawtooth, so the highest mode is in the start. */
+            ENSURE_EQ_INT(motus_particle_init(&start[i], motus_v2((motus_real)(i % 2), (motus_real)(-i)), 1), MOTUS_OK);
+            springs[i - 1].a = i - 1, springs[i - 1].b = i, springs[i - 1].stiffness = 10000;
+        }
+        f.springs = springs;
+        f.spring_count = 6;
+        stepper_init(&s, (motus_method)m);
+        ENSURE_EQ_INT(motus_stepper_max_stable_dt(&s.stepper, start, 7, &f, &max_dt), MOTUS_OK);
+        ENSURE_NEAR(max_dt, (double)motus_method_stability_limit((motus_method)m) / 200, 4 * EPS);
+        naive = MOTUS_R(0.95) * motus_method_stability_limit((motus_method)m) / MOTUS_SQRT(20000);
+        memcpy(p, start, sizeof p);
+        for (k = 0; k < 2000 && largest < 1e6; ++k) {
+            if (motus_stepper_step(&s.stepper, p, 7, &f, naive) != MOTUS_OK) largest = HUGE_VAL;
+            for (i = 1; i < 7; ++i) largest = fmax(largest, (double)motus_vec2_length(p[i].position));
+        }
+        ENSURE(largest >= 1e6); /* blown up */
+        stepper_init(&s, (motus_method)m);
+        memcpy(p, start, sizeof p);
+        largest = 0;
+        for (k = 0; k < 2000; ++k) {
+            ENSURE_EQ_INT(motus_stepper_step(&s.stepper, p, 7, &f, MOTUS_R(0.95) * max_dt), MOTUS_OK);
+            for (i = 1; i < 7; ++i) largest = fmax(largest, (double)motus_vec2_length(p[i].position));
+        }
+        ENSURE(largest < 100);
+        stepper_init(&s, (motus_method)m);
+        memcpy(p, start, sizeof p);
+        largest = 0;
+        for (k = 0; k < 600; ++k) {
+            ENSURE_EQ_INT(motus_stepper_step_substepped(&s.stepper, p, 7, &f, (motus_real)(1.0 / 60.0), MOTUS_R(0.9),
+                                                        16, &taken), MOTUS_OK);
+            for (i = 1; i < 7; ++i) largest = fmax(largest, (double)motus_vec2_length(p[i].position));
+        }
+        printf("  %-20s chain: one-spring step blows up, bound %.4f s holds; at 60 Hz %d substeps, largest |x| %.2f\n",
+               motus_method_name((motus_method)m), (double)max_dt, taken, largest);
+        ENSURE(largest < 100);
+    }
+}
+
 static const motus_test_case TESTS[] = {
     TEST_CASE(limits_table),
     TEST_CASE(bisect_thresholds),
@@ -838,6 +895,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(substepping_keeps_a_stiff_spring_bounded),
     TEST_CASE(substepping_refuses_what_it_cannot_keep_stable),
     TEST_CASE(damping_lowers_the_limit_and_stays_safe),
+    TEST_CASE(chain_needs_the_whole_bound),
     TEST_CASE(dt_extremes_free_fall),
     TEST_CASE(dt_extremes_oscillator),
     TEST_CASE(ten_million_steps),
