@@ -166,6 +166,8 @@ typedef enum motus_result {
     MOTUS_ERROR_SCRATCH_TOO_SMALL, /* the memory given to a stepper is smaller than it needs */
     MOTUS_ERROR_UNSUPPORTED,       /* the method cannot handle this force model (see motus_method) */
     MOTUS_ERROR_INVALID_SCENE,     /* a scene that contradicts itself or its batch (see motus_scene_check) */
+    MOTUS_ERROR_TOO_STIFF,         /* more substeps needed than allowed, or no dt is stable for the method */
+    MOTUS_ERROR_INVALID_ARGUMENT,  /* an argument out of its documented range (safety factor, substep cap) */
     MOTUS_RESULT_COUNT
 } motus_result;
 
@@ -608,16 +610,40 @@ MOTUS_API void motus__accelerations(const motus_forces *forces, const motus_part
    RK4                      4      4       no       w*h < 2.83     -                 at each stage
      Classic Runge-Kutta, stable while w*h < 2*sqrt(2). Energy drifts (a spring's decays) by O(h^4)
      per unit time, so it is not bounded over long runs.
-   FOREST_RUTH              4      3       yes      w*h < 1.57     -                 v at each kick: 1st order
+   FOREST_RUTH              4      3       yes      w*h < 1.5734   -                 v at each kick: 1st order
      Forest-Ruth (Yoshida's 4th-order triple jump of leapfrog), theta = 1/(2 - 2^(1/3)):
      drift theta*h/2, kick theta*h, drift (1-theta)*h/2, kick (1-2*theta)*h, drift (1-theta)*h/2,
      kick theta*h, drift theta*h/2. Symplectic and 4th order for forces of position only; a kick with a
      velocity-dependent force is an explicit Euler step in v, which makes the whole method first order
      (use RK4 or the exact stepper for drag). Its large negative middle step is why its stability
-     limit (1.57) is lower than leapfrog's.
-   EXACT_LINEAR_DRAG        exact  0       -        always         -                 exact (linear drag)
+     limit (1.5734) is lower than leapfrog's.
+   EXACT_LINEAR_DRAG        exact  0       -        no spring (***) -                exact (linear drag)
      Solves v' = g + F/m - k*v over the step (see motus_particle_step_linear_drag). Only for gravity,
-     linear drag and the accumulated force; other terms give MOTUS_ERROR_UNSUPPORTED.
+     linear drag and the accumulated force; other terms give MOTUS_ERROR_UNSUPPORTED. (***) It takes no
+     spring, so it has no oscillator to lose; what it takes it solves exactly at any dt: its limit is +Inf.
+
+   STABILITY LIMITS. On x'' = -w^2 x every method's step is a linear map of (x, v/w) that depends on
+   z = w*h only; the amplitude does not grow while its eigenvalues stay on or inside the unit circle
+   (motus_method_stability_limit gives the z where that stops, measured in tests/stability.c):
+   - explicit Euler: (x, v/w) -> [[1, z], [-z, 1]] (x, v/w), a rotation times sqrt(1 + z^2): grows at any z > 0.
+   - midpoint: I + z*J + z^2*J^2/2 with J^2 = -I, a rotation times |1 + iz - z^2/2| = sqrt(1 + z^4/4) > 1.
+   - semi-implicit Euler, position Verlet, velocity Verlet, leapfrog: determinant 1, trace 2 - z^2, so the
+     eigenvalues stay on the unit circle while |2 - z^2| < 2: z < 2. At z = 2 a double eigenvalue -1 makes
+     the amplitude grow linearly, beyond it by (z^2 - 2 + z*sqrt(z^2 - 4))/2 per step.
+   - RK4: R(iz) = 1 - z^2/2 + z^4/24 + i*(z - z^3/6), |R|^2 = 1 - z^6/72 + z^8/576 <= 1 iff z <= 2*sqrt(2).
+   - Forest-Ruth: three leapfrog maps of theta*z, (1 - 2*theta)*z, theta*z; each has determinant 1, and
+     the product's trace is 2 - u + u^2/12 + c*u^3 (u = z^2, c = 0.1295084). The rotation per step peaks
+     at 0.977 rad (z = 1.185) and returns to 0 where the trace is back at 2: z^2 = (sqrt(1/144 + 4c) -
+     1/12)/(2c), z = 1.5734019. Beyond it an eigenvalue is real and > 1.
+   Damping shrinks the limits: a spring's damping c and the drags add a decay rate g to the oscillation,
+   which pushes the eigenvalues off the imaginary axis, where the methods' limits differ (on the real
+   axis, g*h < 2 for the Euler and Verlet family and midpoint, 2.7853 for RK4, 1.1682 for Forest-Ruth).
+   The stepper's limit therefore uses an effective frequency
+       w_eff = alpha*g/2 + sqrt((alpha*g/2)^2 + w^2),    stable while w_eff*h < limit
+   with alpha = 1 for semi-implicit Euler, both Verlets and leapfrog (then it is exact: z^2 + 2*g*h < 4
+   for semi-implicit Euler), alpha = 2.8284/2.7853 for RK4 (exact at both ends), and alpha = 2 for
+   Forest-Ruth (1.79 is the least that holds over damping ratios 0..1e5, found numerically; its kicks are
+   explicit Euler steps in v, and the middle one runs backwards). See motus_stepper_max_stable_dt.
 
    (1): with MOTUS_STEPPER_REUSE_FORCES, the acceleration computed at the end of a step is reused at the
    start of the next ("first same as last"). Only valid if nothing but the stepper changes positions,
@@ -689,6 +715,89 @@ MOTUS_API int motus_method_evaluations(motus_method method, unsigned flags) {
     if ((flags & MOTUS_STEPPER_REUSE_FORCES) && (method == MOTUS_VELOCITY_VERLET || method == MOTUS_LEAPFROG))
         return 1;
     return evaluations[method];
+}
+
+/* The largest w*h at which the method's amplitude on the undamped spring x'' = -w^2 x does not grow
+   (see STABILITY LIMITS): 2 for semi-implicit Euler, both Verlets and leapfrog, 2*sqrt(2) for RK4,
+   1.5734 for Forest-Ruth, 0 for explicit Euler and midpoint (they grow at every dt > 0), +Inf for the
+   exact stepper (it takes no spring, and solves what it takes exactly). -1 for a value out of range, as
+   motus_method_order. At the limit itself the symplectic methods grow linearly: stay below it. */
+MOTUS_API motus_real motus_method_stability_limit(motus_method method) {
+    switch (method) {
+    case MOTUS_SEMI_IMPLICIT_EULER:
+    case MOTUS_POSITION_VERLET:
+    case MOTUS_VELOCITY_VERLET:
+    case MOTUS_LEAPFROG: return 2;
+    case MOTUS_EXPLICIT_EULER:
+    case MOTUS_MIDPOINT: return 0;
+    case MOTUS_RK4: return (motus_real)2.8284271247461900976;
+    case MOTUS_FOREST_RUTH: return (motus_real)1.5734019474345367;
+    case MOTUS_EXACT_LINEAR_DRAG: return (motus_real)HUGE_VAL;
+    case MOTUS_METHOD_COUNT: break;
+    }
+    return -1;
+}
+
+/* The largest step for a method, given w^2 (stiffness over mass, summed as motus_stepper_max_stable_dt
+   does) and a decay rate g (1/s) from damping and drag: limit/w_eff, w_eff as in STABILITY LIMITS.
+   +Inf when nothing limits the step; 0 when no step is stable (or w_eff overflows). */
+MOTUS_API motus_real motus__stable_dt(motus_method method, motus_real omega_squared, motus_real decay_rate) {
+    const motus_real limit = motus_method_stability_limit(method);
+    motus_real alpha = 1, half;
+    if (!motus_real_is_finite(limit) || (omega_squared == 0 && decay_rate == 0)) return (motus_real)HUGE_VAL;
+    if (limit == 0) /* explicit Euler and midpoint: no spring is stable; a pure decay is while g*h < 2 */
+        return omega_squared > 0 ? 0 : 2 / decay_rate;
+    if (method == MOTUS_RK4) alpha = (motus_real)(2.8284271247461900976 / 2.7852935634050);
+    if (method == MOTUS_FOREST_RUTH) alpha = 2;
+    half = MOTUS_R(0.5) * alpha * decay_rate;
+    return limit / (half + MOTUS_SQRT(half * half + omega_squared));
+}
+
+/* The largest dt for which `method` keeps an undamped spring of `stiffness` (N/m) on a particle of `mass`
+   (kg; to an anchor, or to an immovable particle) from growing: limit/w with w = sqrt(stiffness/mass).
+   No safety margin: that is the edge itself (use a fraction of it, or motus_substeps_for with a safety
+   factor). For a spring between two particles use the reduced mass m1*m2/(m1 + m2). Writes 0 for explicit
+   Euler and midpoint (no dt is stable), +Inf for stiffness 0 or the exact stepper. Bad input (NaN or Inf,
+   stiffness < 0, mass <= 0, a method out of range) returns a result and leaves *max_dt alone. */
+MOTUS_API motus_result motus_max_stable_dt(motus_method method, motus_real stiffness, motus_real mass,
+                                           motus_real *max_dt) {
+    if (!max_dt) return MOTUS_ERROR_NULL_POINTER;
+    if ((unsigned)method >= MOTUS_METHOD_COUNT) return MOTUS_ERROR_UNSUPPORTED;
+    if (!motus_real_is_finite(stiffness) || !motus_real_is_finite(mass)) return MOTUS_ERROR_NOT_FINITE;
+    if (!(mass > 0)) return MOTUS_ERROR_INVALID_MASS;
+    if (stiffness < 0) return MOTUS_ERROR_INVALID_FORCES;
+    *max_dt = motus__stable_dt(method, stiffness / mass, 0);
+    return MOTUS_OK;
+}
+
+/* The fewest equal substeps n that bring dt/n below safety*max_stable_dt (strictly, in motus_real
+   arithmetic: the substep motus_stepper_step_substepped takes). safety in (0, 1]. Below the limit a
+   symplectic method is stable but its amplitude wanders over an ellipse that stretches as w*h nears the
+   limit: semi-implicit Euler started at rest reaches 1/sqrt(1 - safety) times its start amplitude (3.2 at
+   0.9, 1.4 at 0.5), so a margin buys smoothness too. max_stable_dt = +Inf gives 1.
+   MOTUS_ERROR_TOO_STIFF if max_stable_dt is 0, or more than INT_MAX/2 substeps would be needed. */
+MOTUS_API motus_result motus_substeps_for(motus_real dt, motus_real max_stable_dt, motus_real safety, int *substeps) {
+    motus_real limit, quotient;
+    int n;
+    if (!substeps) return MOTUS_ERROR_NULL_POINTER;
+    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    if ((!motus_real_is_finite(max_stable_dt) && !(max_stable_dt > 0)) || !motus_real_is_finite(safety))
+        return MOTUS_ERROR_NOT_FINITE; /* NaN or -Inf; +Inf means no limit */
+    if (!(max_stable_dt >= 0) || !(safety > 0 && safety <= 1)) return MOTUS_ERROR_INVALID_ARGUMENT;
+    if (!motus_real_is_finite(max_stable_dt)) {
+        *substeps = 1;
+        return MOTUS_OK;
+    }
+    limit = safety * max_stable_dt;
+    quotient = dt / limit; /* +Inf when limit is 0 */
+    if (!(quotient < (motus_real)(INT_MAX / 2))) return MOTUS_ERROR_TOO_STIFF;
+    /* ceil(dt/limit) up to rounding; then settle on the least n with dt/n < limit as computed. */
+    n = (int)quotient;
+    if (n < 1) n = 1;
+    while (!(dt / (motus_real)n < limit)) ++n;
+    while (n > 1 && dt / (motus_real)(n - 1) < limit) --n;
+    *substeps = n;
+    return MOTUS_OK;
 }
 
 /* Scratch arrays per particle: [0] new x, [1] new v, [2] acceleration, then per method: RK stages, the
@@ -1024,6 +1133,104 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
         particles[i].velocity = v[i];
     }
     stepper->time += dt;
+    return MOTUS_OK;
+}
+
+/* The largest dt with which motus_stepper_step keeps the springs and drags of `forces` on particles[0..count)
+   from growing, for the stepper's method: limit/w_eff (see STABILITY LIMITS), with w and g bounded by
+   Gershgorin's theorem on the columns of M^-1*K and M^-1*C (spring stiffness and damping matrices):
+       w^2 <= max over movable j of  sum over j's springs s of k_s*(1/m_j + 1/m_other)
+       g   <= linear_drag + 2*quadratic_drag*max|v_j| + max over movable j of  sum over s of c_s*(1/m_j + 1/m_other)
+   1/m_other is 0 for an anchor or an immovable end. One spring: w^2 = k*(1/m1 + 1/m2) exactly; a long
+   chain of equal springs: 4k/m, its highest mode. What it does not cover: a spring with rest length L
+   squeezed below L/2 (sideways it then acts as a negative stiffness k*(L/|d| - 1) > k: a buckling, not
+   an oscillation), the attractor and the callback. The damping rate g is combined with w as if they
+   shared modes; for damping that does not, w_eff is an estimate. Quadratic drag is taken at the
+   velocities given. Writes +Inf when nothing limits the step, 0 for explicit Euler or midpoint with a
+   spring. Uses the first count elements of the stepper's scratch as work space (not its state: what it
+   keeps between steps is untouched). Bad input returns a result and leaves *max_dt alone; the exact
+   stepper with springs or other terms it cannot take returns MOTUS_ERROR_UNSUPPORTED, as its step does. */
+MOTUS_API motus_result motus_stepper_max_stable_dt(motus_stepper *stepper, const motus_particle *particles, int count,
+                                                   const motus_forces *forces, motus_real *max_dt) {
+    motus_vec2 *sums; /* per particle: sum of k_s*(1/m_j + 1/m_other) in x, of c_s*(...) in y */
+    motus_real omega_squared = 0, spring_decay = 0, fastest = 0, decay;
+    motus_result result;
+    int i;
+    if (!stepper || !max_dt || (!particles && count > 0)) return MOTUS_ERROR_NULL_POINTER;
+    if (count < 0 || count > stepper->capacity) return MOTUS_ERROR_INVALID_COUNT;
+    if ((unsigned)stepper->method >= MOTUS_METHOD_COUNT) return MOTUS_ERROR_UNSUPPORTED;
+    if (!forces) {
+        *max_dt = (motus_real)HUGE_VAL;
+        return MOTUS_OK;
+    }
+    result = motus_forces_check(forces, count);
+    if (result != MOTUS_OK) return result;
+    if (stepper->method == MOTUS_EXACT_LINEAR_DRAG) {
+        if (forces->quadratic_drag != 0 || forces->attractor_strength != 0 || forces->spring_count != 0 ||
+            forces->callback)
+            return MOTUS_ERROR_UNSUPPORTED;
+        *max_dt = (motus_real)HUGE_VAL;
+        return MOTUS_OK;
+    }
+    for (i = 0; i < count; ++i) {
+        if (!motus_real_is_finite(particles[i].inverse_mass)) return MOTUS_ERROR_NOT_FINITE;
+        if (particles[i].inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
+    }
+    if (forces->quadratic_drag != 0)
+        for (i = 0; i < count; ++i) {
+            motus_real speed = motus_vec2_length(particles[i].velocity);
+            if (!motus_real_is_finite(speed)) return motus_vec2_is_finite(particles[i].velocity)
+                                                         ? MOTUS_ERROR_OVERFLOW : MOTUS_ERROR_NOT_FINITE;
+            if (speed > fastest) fastest = speed;
+        }
+    sums = stepper->scratch;
+    for (i = 0; i < count; ++i) sums[i] = motus_v2(0, 0);
+    for (i = 0; i < forces->spring_count; ++i) {
+        const motus_spring *s = &forces->springs[i];
+        const motus_real both = particles[s->a].inverse_mass + (s->b < 0 ? 0 : particles[s->b].inverse_mass);
+        const motus_vec2 term = motus_v2(s->stiffness * both, s->damping * both);
+        sums[s->a] = motus_vec2_add(sums[s->a], term);
+        if (s->b >= 0) sums[s->b] = motus_vec2_add(sums[s->b], term);
+    }
+    for (i = 0; i < count; ++i) {
+        if (particles[i].inverse_mass == 0) continue; /* nothing moves it: its column bounds no motion */
+        if (sums[i].x > omega_squared) omega_squared = sums[i].x;
+        if (sums[i].y > spring_decay) spring_decay = sums[i].y;
+    }
+    decay = forces->linear_drag + 2 * forces->quadratic_drag * fastest + spring_decay;
+    *max_dt = motus__stable_dt(stepper->method, omega_squared, decay);
+    return MOTUS_OK;
+}
+
+/* motus_stepper_step over dt in n equal substeps of dt/n, n the fewest that keep each below
+   safety*motus_stepper_max_stable_dt (motus_substeps_for), at most max_substeps. *taken (may be NULL)
+   gets the substeps completed. Everything is checked before the first substep, and a substep writes
+   nothing unless it succeeds: so bad input, or a scene that needs more than max_substeps
+   (MOTUS_ERROR_TOO_STIFF), leaves particles and stepper as they were, with *taken = 0. A later substep
+   that overflows stops there, with the state of the substeps before it and *taken saying how many. The
+   stepper's time grows by n roundings of dt/n, which may differ from dt in the last bit. */
+MOTUS_API motus_result motus_stepper_step_substepped(motus_stepper *stepper, motus_particle *particles, int count,
+                                                     const motus_forces *forces, motus_real dt, motus_real safety,
+                                                     int max_substeps, int *taken) {
+    motus_real max_dt = 0, h;
+    motus_result result;
+    int n = 0, i;
+    if (taken) *taken = 0;
+    if (!stepper || (!particles && count > 0)) return MOTUS_ERROR_NULL_POINTER;
+    if (count < 0 || count > stepper->capacity) return MOTUS_ERROR_INVALID_COUNT;
+    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    if (max_substeps < 1) return MOTUS_ERROR_INVALID_ARGUMENT;
+    result = motus_stepper_max_stable_dt(stepper, particles, count, forces, &max_dt);
+    if (result != MOTUS_OK) return result;
+    result = motus_substeps_for(dt, max_dt, safety, &n);
+    if (result != MOTUS_OK) return result;
+    if (n > max_substeps) return MOTUS_ERROR_TOO_STIFF;
+    h = dt / (motus_real)n;
+    for (i = 0; i < n; ++i) {
+        result = motus_stepper_step(stepper, particles, count, forces, h);
+        if (result != MOTUS_OK) return result;
+        if (taken) *taken = i + 1;
+    }
     return MOTUS_OK;
 }
 
@@ -1722,6 +1929,11 @@ MOTUS_API const char *motus_result_string(motus_result result) {
         return "scene invalid: unknown MOTUS_HAS_* bit, both dampings, dimensions not 2 or 3, or bounds min > max";
     case MOTUS_ERROR_UNSUPPORTED:
         return "this method cannot integrate these forces (the exact stepper takes gravity and linear drag only)";
+    case MOTUS_ERROR_TOO_STIFF:
+        return "springs too stiff for this dt: more substeps needed than allowed, or the method (explicit Euler, "
+               "midpoint) is unstable on a spring at any dt";
+    case MOTUS_ERROR_INVALID_ARGUMENT:
+        return "argument out of range: a safety factor must be in (0, 1], a substep cap >= 1, a step limit >= 0";
     case MOTUS_RESULT_COUNT: break;
     }
     return "unknown motus_result value";

@@ -48,6 +48,18 @@ static int compile_stepper(void) {
     bad |= motus_stepper_step(&stepper, particles, 2, &forces, MOTUS_R(0.5)) != MOTUS_OK;
     bad |= calls != motus_method_evaluations(MOTUS_RK4, desc.flags) || motus_method_order(MOTUS_RK4) != 4;
     bad |= stepper.time != MOTUS_R(0.5) || particles[0].position.x <= 0; /* the spring pulled them together */
+    {
+        /* Stability limits and substepping: k = 10 between two 1 kg particles, w^2 = 20, RK4's limit
+           2.83/4.47 = 0.63 s, so 0.5 s at safety 0.9 is one substep. */
+        motus_real max_dt = 0;
+        int substeps = 0, taken = 0;
+        bad |= motus_method_stability_limit(MOTUS_RK4) < 2;
+        bad |= motus_max_stable_dt(MOTUS_RK4, 10, 1, &max_dt) != MOTUS_OK;
+        bad |= motus_stepper_max_stable_dt(&stepper, particles, 2, &forces, &max_dt) != MOTUS_OK;
+        bad |= motus_substeps_for(MOTUS_R(0.5), max_dt, MOTUS_R(0.9), &substeps) != MOTUS_OK || substeps != 1;
+        bad |= motus_stepper_step_substepped(&stepper, particles, 2, &forces, MOTUS_R(0.5), MOTUS_R(0.9), 8, &taken) !=
+                   MOTUS_OK || taken != substeps;
+    }
     motus_stepper_reset(&stepper);
     bad |= motus_method_name(MOTUS_RK4) == NULL || motus_method_name(MOTUS_METHOD_COUNT) != NULL;
     return bad;
