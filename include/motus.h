@@ -823,7 +823,9 @@ MOTUS_API motus_result motus__diagnose(const motus_particle *particles, int coun
 }
 
 /* Advances particles[0..count) by dt under `forces` (NULL: no forces but the accumulated ones) with the
-   stepper's method. On any result but MOTUS_OK nothing is written: not the particles, not the stepper. */
+   stepper's method. On any result but MOTUS_OK nothing is written: not the particles, not the stepper nor
+   what it keeps between steps (the rest of its scratch is working memory). count 0 is a step of nothing:
+   particles may be NULL, the clock advances. */
 MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle *particles, int count,
                                           const motus_forces *forces, motus_real dt) {
     static const motus_forces no_forces = {{0, 0}, 0, 0, 0, {0, 0}, NULL, 0, NULL, NULL};
@@ -1691,8 +1693,10 @@ MOTUS_API motus_result motus_batch_add_spring_forces(const motus_batch *batch, i
      NaN or Inf that a force callback returned: the inputs motus can see were finite.
    - Unknown bits in motus_stepper_desc.flags, or scratch not aligned for motus_real:
      MOTUS_ERROR_INVALID_DESC; unknown MOTUS_HAS_* bits in a scene: MOTUS_ERROR_INVALID_SCENE.
-   On any result but MOTUS_OK nothing was written (particles, stepper and its scratch, force arrays), in
-   every build, with one exception: bad particle data in the batch kernels' release builds.
+   On any result but MOTUS_OK nothing was written (particles, the stepper and what it keeps between steps,
+   force arrays), in every build, with one exception: bad particle data in the batch kernels' release
+   builds. A stepper's scratch is working memory: a step computes there before it decides, so only the
+   part kept between steps (position Verlet's displacements, a kept acceleration) is sure to stay.
 
    Release builds check all of the above. The particle functions and motus_stepper_step are all or
    nothing at no extra pass over the data: the new state is computed aside, summed (a NaN or Inf makes the
