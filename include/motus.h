@@ -36,8 +36,10 @@
    - A particle stores its inverse mass. Inverse mass 0 is an immovable particle: forces never move it.
    - Forces accumulate until you clear them. motus_particle_step does not clear them, so a force that is
      constant over many steps (gravity) may be added once; the reference program clears every frame.
-   - Functions that can be handed bad input return a motus_result; on any result other than MOTUS_OK the
-     particle is left exactly as it was. motus_result_string turns a result into a sentence.
+   - Functions that can be handed bad input return a motus_result; on any result other than MOTUS_OK
+     nothing was written (the batch kernels' release builds excepted, for bad particle data). A count of 0
+     is valid and does nothing. motus_result_string turns a result into a sentence; what each build checks
+     is under "Validation and messages", with motus_particles_check to find the first bad particle.
    - No compound literals in the header, so it also compiles as C++.
 
    CONFIGURATION
@@ -53,8 +55,9 @@
                                             Wider than the target's registers works, but gcc and clang then
                                             warn -Wpsabi (harmless: the functions are inline).
    - MOTUS_NO_SIMD         (undefined)      batch kernels one particle at a time (the results are the same).
-   - MOTUS_CHECKED         (undefined)      motus_batch_step checks every particle of its range before
-                                            writing anything (see "Batch kernels": release builds don't).
+   - MOTUS_CHECKED         (undefined)      motus_batch_step checks every particle of its range, and
+                                            motus_batch_add_spring_forces every spring, before writing
+                                            anything (see "Validation and messages": release builds don't).
 
    DAMPING: PER STEP OR PER SECOND
    ===============================
@@ -168,6 +171,7 @@ typedef enum motus_result {
     MOTUS_ERROR_INVALID_SCENE,     /* a scene that contradicts itself or its batch (see motus_scene_check) */
     MOTUS_ERROR_TOO_STIFF,         /* more substeps needed than allowed, or no dt is stable for the method */
     MOTUS_ERROR_INVALID_ARGUMENT,  /* an argument out of its documented range (safety factor, substep cap) */
+    MOTUS_ERROR_INVALID_DESC,      /* a desc with unknown flag bits, or scratch not aligned for motus_real */
     MOTUS_RESULT_COUNT
 } motus_result;
 
@@ -480,11 +484,13 @@ MOTUS__INLINE void motus__spring_check(const motus_spring *s, int count, motus__
 }
 
 /* MOTUS_OK if the model can be used with `count` particles: finite fields, non-negative drags, stiffness,
-   damping, rest lengths and attractor strength, spring ends in [0, count) (b may be -1). */
+   damping, rest lengths and attractor strength, spring ends in [0, count) (b may be -1). count < 0 is
+   MOTUS_ERROR_INVALID_COUNT, as in motus_stepper_step. */
 MOTUS_API motus_result motus_forces_check(const motus_forces *forces, int count) {
     motus__bits not_finite = 0;
     int i, out_of_range = 0;
     if (!forces) return MOTUS_ERROR_NULL_POINTER;
+    if (count < 0) return MOTUS_ERROR_INVALID_COUNT;
     if (!motus_vec2_is_finite(forces->gravity) || !motus_real_is_finite(forces->linear_drag) ||
         !motus_real_is_finite(forces->quadratic_drag) || !motus_real_is_finite(forces->attractor_strength) ||
         !motus_vec2_is_finite(forces->attractor_position))
@@ -492,7 +498,6 @@ MOTUS_API motus_result motus_forces_check(const motus_forces *forces, int count)
     if (forces->linear_drag < 0 || forces->quadratic_drag < 0 || forces->attractor_strength < 0 ||
         forces->spring_count < 0 || (forces->spring_count > 0 && !forces->springs))
         return MOTUS_ERROR_INVALID_FORCES;
-    if (count < 0) count = 0; /* then every spring end is out of range */
     for (i = 0; i < forces->spring_count; ++i) motus__spring_check(&forces->springs[i], count, &not_finite, &out_of_range);
     if (not_finite & MOTUS__SIGN_BIT) return MOTUS_ERROR_NOT_FINITE;
     return out_of_range ? MOTUS_ERROR_INVALID_FORCES : MOTUS_OK;
@@ -673,7 +678,7 @@ typedef struct motus_stepper_desc {
     motus_method method; /* 0: semi-implicit Euler */
     void *scratch;       /* motus_stepper_scratch_size(method, capacity) bytes, aligned for motus_real */
     size_t scratch_bytes;
-    unsigned flags; /* MOTUS_STEPPER_* */
+    unsigned flags; /* MOTUS_STEPPER_*; any other bit is MOTUS_ERROR_INVALID_DESC */
 } motus_stepper_desc;
 
 typedef struct motus_stepper {
@@ -820,6 +825,12 @@ MOTUS_API size_t motus_stepper_scratch_size(motus_method method, int capacity) {
     return (size_t)motus__scratch_arrays(method) * (size_t)capacity * sizeof(motus_vec2);
 }
 
+/* The alignment motus_real needs, in C99 (no _Alignof) and C++ alike. */
+typedef struct motus__align_probe {
+    char c;
+    motus_real r;
+} motus__align_probe;
+
 MOTUS_API motus_result motus_stepper_init(motus_stepper *stepper, const motus_stepper_desc *desc) {
     size_t needed;
     if (!stepper || !desc) return MOTUS_ERROR_NULL_POINTER;
@@ -829,6 +840,11 @@ MOTUS_API motus_result motus_stepper_init(motus_stepper *stepper, const motus_st
     if (needed == 0 && desc->capacity > 0) return MOTUS_ERROR_INVALID_COUNT;
     if (desc->scratch_bytes < needed) return MOTUS_ERROR_SCRATCH_TOO_SMALL;
     if (!desc->scratch && needed > 0) return MOTUS_ERROR_NULL_POINTER;
+    /* A flag meant for something else (a MOTUS_HAS_* bit) would otherwise be ignored without a word; and
+       scratch read as motus_vec2 at a misaligned address is undefined behaviour (a fault on some CPUs). */
+    if ((desc->flags & ~(unsigned)MOTUS_STEPPER_REUSE_FORCES) ||
+        (uintptr_t)desc->scratch % offsetof(motus__align_probe, r) != 0)
+        return MOTUS_ERROR_INVALID_DESC;
     stepper->method = desc->method;
     stepper->capacity = desc->capacity;
     stepper->flags = desc->flags;
@@ -934,7 +950,9 @@ MOTUS_API motus_result motus__diagnose(const motus_particle *particles, int coun
 }
 
 /* Advances particles[0..count) by dt under `forces` (NULL: no forces but the accumulated ones) with the
-   stepper's method. On any result but MOTUS_OK nothing is written: not the particles, not the stepper. */
+   stepper's method. On any result but MOTUS_OK nothing is written: not the particles, not the stepper nor
+   what it keeps between steps (the rest of its scratch is working memory). count 0 is a step of nothing:
+   particles may be NULL, the clock advances. */
 MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle *particles, int count,
                                           const motus_forces *forces, motus_real dt) {
     static const motus_forces no_forces = {{0, 0}, 0, 0, 0, {0, 0}, NULL, 0, NULL, NULL};
@@ -943,6 +961,7 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
     motus_result result;
     int i, reuse, bad = 0, checked = 0, suspicious = 0;
     if (!stepper || (!particles && count > 0)) return MOTUS_ERROR_NULL_POINTER;
+    if (!stepper->scratch && stepper->capacity > 0) return MOTUS_ERROR_NULL_POINTER; /* filled by hand */
     if (count < 0 || count > stepper->capacity) return MOTUS_ERROR_INVALID_COUNT;
     if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (!forces) forces = &no_forces;
@@ -1877,13 +1896,18 @@ MOTUS_API motus_result motus__springs_check(const motus_spring *springs, int n, 
 }
 
 /* Adds the forces of `springs` (see motus_spring) to the force arrays of a 2D batch of `count` particles,
-   as motus_stepper_step sums them; call it once per step for the whole batch, before stepping its ranges. */
+   as motus_stepper_step sums them; call it once per step for the whole batch, before stepping its ranges.
+   Like motus_batch_step, a release build reads the data once: a NaN or Inf among the spring ends, or a sum
+   that overflows, gives MOTUS_ERROR_NOT_FINITE after the forces were added. With MOTUS_CHECKED a spring
+   whose force or end forces are not finite is found first, and nothing is written. */
 MOTUS_API motus_result motus_batch_add_spring_forces(const motus_batch *batch, int count, const motus_spring *springs,
                                                      int spring_count) {
     motus_result result;
-    int i;
+    motus__bits not_finite = 0;
+    int i, pass;
     if (!batch) return MOTUS_ERROR_NULL_POINTER;
     if (count < 0) return MOTUS_ERROR_INVALID_COUNT;
+    if (batch->dimensions != 2 && batch->dimensions != 3) return MOTUS_ERROR_INVALID_SCENE;
     if (batch->dimensions != 2) return MOTUS_ERROR_UNSUPPORTED;
     if (spring_count > 0 && (!batch->position[0] || !batch->position[1] || !batch->velocity[0] ||
                              !batch->velocity[1] || !batch->force[0] || !batch->force[1]))
@@ -1891,52 +1915,225 @@ MOTUS_API motus_result motus_batch_add_spring_forces(const motus_batch *batch, i
     if (spring_count < 0 || (spring_count > 0 && !springs)) return MOTUS_ERROR_INVALID_FORCES;
     result = motus__springs_check(springs, spring_count, count); /* as motus_forces_check, faster */
     if (result != MOTUS_OK) return result;
-    for (i = 0; i < spring_count; ++i) {
-        const motus_spring *s = &springs[i];
-        const int a = s->a, b = s->b, anchored = b < 0;
-        motus_vec2 xa = motus_v2(batch->position[0][a], batch->position[1][a]);
-        motus_vec2 va = motus_v2(batch->velocity[0][a], batch->velocity[1][a]);
-        motus_vec2 d = motus_vec2_sub(xa, anchored ? s->anchor : motus_v2(batch->position[0][b], batch->position[1][b]));
-        motus_vec2 relative = anchored ? va : motus_vec2_sub(va, motus_v2(batch->velocity[0][b], batch->velocity[1][b]));
-        motus_vec2 f = motus__spring_force(s, d, relative);
-        batch->force[0][a] += f.x;
-        batch->force[1][a] += f.y;
-        if (!anchored) {
-            batch->force[0][b] -= f.x;
-            batch->force[1][b] -= f.y;
+    /* Pass 0 (checked builds only) computes every force and writes nothing; pass 1 adds them. */
+#ifdef MOTUS_CHECKED
+    pass = 0;
+#else
+    pass = 1;
+#endif
+    for (; pass < 2; ++pass) {
+        for (i = 0; i < spring_count; ++i) {
+            const motus_spring *s = &springs[i];
+            const int a = s->a, b = s->b, anchored = b < 0;
+            motus_vec2 xa = motus_v2(batch->position[0][a], batch->position[1][a]);
+            motus_vec2 va = motus_v2(batch->velocity[0][a], batch->velocity[1][a]);
+            motus_vec2 d = motus_vec2_sub(xa, anchored ? s->anchor : motus_v2(batch->position[0][b], batch->position[1][b]));
+            motus_vec2 relative = anchored ? va : motus_vec2_sub(va, motus_v2(batch->velocity[0][b], batch->velocity[1][b]));
+            motus_vec2 f = motus__spring_force(s, d, relative);
+            if (pass == 0) {
+                if (!motus_vec2_is_finite(f) || !motus_real_is_finite(batch->force[0][a]) ||
+                    !motus_real_is_finite(batch->force[1][a]) ||
+                    (!anchored && (!motus_real_is_finite(batch->force[0][b]) || !motus_real_is_finite(batch->force[1][b]))))
+                    return MOTUS_ERROR_NOT_FINITE;
+                continue;
+            }
+            batch->force[0][a] += f.x;
+            batch->force[1][a] += f.y;
+            not_finite |= motus__not_finite_bits(batch->force[0][a]) | motus__not_finite_bits(batch->force[1][a]);
+            if (!anchored) {
+                batch->force[0][b] -= f.x;
+                batch->force[1][b] -= f.y;
+                not_finite |= motus__not_finite_bits(batch->force[0][b]) | motus__not_finite_bits(batch->force[1][b]);
+            }
         }
     }
-    return MOTUS_OK;
+    /* Every force written (a NaN or Inf the arrays held, a spring's, or a sum that overflowed), tested by bit
+       operations that the loop ORs up. */
+    return (not_finite & MOTUS__SIGN_BIT) ? MOTUS_ERROR_NOT_FINITE : MOTUS_OK;
 }
 
 /* =================================================================================================
    Validation and messages
-   ================================================================================================= */
+   =================================================================================================
+   BAD INPUT: WHAT EACH BUILD CHECKS
+   Every function that can be handed bad input returns a motus_result, and checks the arguments it takes
+   and the data it reads before anything is written. The rules, the same for every function:
+   - NULL where memory is needed: MOTUS_ERROR_NULL_POINTER. Memory is not needed for a count of 0
+     (particles, springs) nor for batch arrays the scene does not have.
+   - A count of 0 is valid: MOTUS_OK and nothing written. motus_stepper_step with count 0 is a step of an
+     empty world: its clock still advances by dt, and (as on any change of count) it forgets the last
+     displacements of position Verlet and a kept acceleration.
+   - count < 0, first < 0, first + count past INT_MAX, count above a stepper's capacity, a force model
+     used with count < 0: MOTUS_ERROR_INVALID_COUNT. motus cannot know how long your arrays are: a range
+     inside INT_MAX but past the end of an array is yours to avoid.
+   - dt not finite or not > 0 (-0 included): MOTUS_ERROR_INVALID_TIME_STEP, before anything else is read.
+   - NaN or Inf in an argument, a force model, a scene or a particle field the function reads:
+     MOTUS_ERROR_NOT_FINITE. A damping factor is a fraction, so a NaN one is out of its range [0, 1]:
+     MOTUS_ERROR_INVALID_DAMPING (a NaN restitution or drag rate is MOTUS_ERROR_NOT_FINITE).
+   - mass <= 0 or 1/mass infinite, inverse mass < 0: MOTUS_ERROR_INVALID_MASS. An inverse mass of -Inf is
+     both; motus_particle_check and the batch checks say NOT_FINITE, the steps say INVALID_MASS.
+   - Finite inputs whose result is not finite (a huge force, a huge dt): MOTUS_ERROR_OVERFLOW. So is a
+     NaN or Inf that a force callback returned: the inputs motus can see were finite.
+   - Unknown bits in motus_stepper_desc.flags, or scratch not aligned for motus_real:
+     MOTUS_ERROR_INVALID_DESC; unknown MOTUS_HAS_* bits in a scene: MOTUS_ERROR_INVALID_SCENE.
+   On any result but MOTUS_OK nothing was written (particles, the stepper and what it keeps between steps,
+   force arrays), in every build, with one exception: bad particle data in the batch kernels' release
+   builds. A stepper's scratch is working memory: a step computes there before it decides, so only the
+   part kept between steps (position Verlet's displacements, a kept acceleration) is sure to stay.
+
+   Release builds check all of the above. The particle functions and motus_stepper_step are all or
+   nothing at no extra pass over the data: the new state is computed aside, summed (a NaN or Inf makes the
+   sum so), and written only if the sum is finite; only a sum that is not finite has its values looked at
+   one by one, to name the cause. The batch kernels check the scene and the arguments (O(1)) but read the
+   particle data once: a NaN or Inf in it, or an overflow, makes motus_batch_step and
+   motus_batch_add_spring_forces return MOTUS_ERROR_NOT_FINITE after they wrote, and a negative
+   batch.inverse_mass[i] is not looked for.
+   Checked builds (define MOTUS_CHECKED) find bad batch data first: motus_batch_step runs
+   motus_batch_check over its range, motus_batch_add_spring_forces computes every spring force first, and
+   on bad data nothing is written (a negative inverse mass is then MOTUS_ERROR_INVALID_MASS).
+   Either build: call motus_particles_check or motus_batch_check_report where data comes in (a file, the
+   network, an editor) to learn which particle and which field is bad. */
+
 MOTUS_API const char *motus_result_string(motus_result result) {
     switch (result) {
     case MOTUS_OK: return "ok";
-    case MOTUS_ERROR_NULL_POINTER: return "a pointer argument was NULL";
-    case MOTUS_ERROR_NOT_FINITE: return "an input was NaN or infinite (argument or particle field)";
-    case MOTUS_ERROR_INVALID_MASS: return "mass must be finite and > 0 (inverse mass >= 0; 0 = immovable)";
-    case MOTUS_ERROR_INVALID_TIME_STEP: return "time step must be finite and > 0 seconds";
-    case MOTUS_ERROR_INVALID_DAMPING: return "damping factor must be in [0, 1] and drag rate >= 0";
-    case MOTUS_ERROR_OVERFLOW: return "the result would overflow to infinity; state left unchanged";
-    case MOTUS_ERROR_INVALID_COUNT: return "particle count must be >= 0 and at most the stepper's capacity";
+    case MOTUS_ERROR_NULL_POINTER:
+        return "a pointer argument was NULL, or an array that the count or the scene needs; pass valid memory";
+    case MOTUS_ERROR_NOT_FINITE:
+        return "an input was NaN or infinite (an argument, a particle field, a force or scene value); all must be "
+               "finite";
+    case MOTUS_ERROR_INVALID_MASS:
+        return "mass must be finite and > 0, with 1/mass finite; inverse mass must be >= 0 (0 = immovable)";
+    case MOTUS_ERROR_INVALID_TIME_STEP: return "time step dt must be finite and > 0 seconds (not 0, negative, NaN or Inf)";
+    case MOTUS_ERROR_INVALID_DAMPING:
+        return "damping factor or restitution must be in [0, 1] (NaN is not), drag rate must be >= 0";
+    case MOTUS_ERROR_OVERFLOW:
+        return "the inputs were finite but the result would not be (overflow, or NaN from a force callback); "
+               "nothing was written: use a smaller dt or smaller forces";
+    case MOTUS_ERROR_INVALID_COUNT:
+        return "count or range out of bounds: count and first must be >= 0, first + count <= INT_MAX, count at "
+               "most the stepper's capacity";
     case MOTUS_ERROR_INVALID_FORCES:
-        return "force model out of range: drags and attractor strength >= 0, spring indices valid, all finite";
-    case MOTUS_ERROR_SCRATCH_TOO_SMALL: return "stepper memory too small: see motus_stepper_scratch_size()";
+        return "force model out of range: drags, attractor strength, stiffness, spring damping and rest length "
+               "must be >= 0; spring ends in [0, count) with b = -1 for an anchor and a != b; springs not NULL";
+    case MOTUS_ERROR_SCRATCH_TOO_SMALL:
+        return "stepper memory too small: give at least motus_stepper_scratch_size(method, capacity) bytes";
     case MOTUS_ERROR_INVALID_SCENE:
-        return "scene invalid: unknown MOTUS_HAS_* bit, both dampings, dimensions not 2 or 3, or bounds min > max";
+        return "scene invalid: unknown MOTUS_HAS_* bit, both damping flags, dimensions not 2 or 3, or bounds "
+               "min > max";
     case MOTUS_ERROR_UNSUPPORTED:
-        return "this method cannot integrate these forces (the exact stepper takes gravity and linear drag only)";
+        return "unsupported: the exact stepper takes gravity and linear drag only, a batch semi-implicit or "
+               "explicit Euler and springs in 2D only; or the method value is unknown";
     case MOTUS_ERROR_TOO_STIFF:
         return "springs too stiff for this dt: more substeps needed than allowed, or the method (explicit Euler, "
                "midpoint) is unstable on a spring at any dt";
     case MOTUS_ERROR_INVALID_ARGUMENT:
         return "argument out of range: a safety factor must be in (0, 1], a substep cap >= 1, a step limit >= 0";
+    case MOTUS_ERROR_INVALID_DESC:
+        return "stepper desc invalid: flags may only have MOTUS_STEPPER_* bits, scratch must be aligned for "
+               "motus_real";
     case MOTUS_RESULT_COUNT: break;
     }
     return "unknown motus_result value";
+}
+
+/* The fields a check can find bad, in particles and in batches. */
+typedef enum motus_field {
+    MOTUS_FIELD_NONE = 0,
+    MOTUS_FIELD_POSITION,
+    MOTUS_FIELD_VELOCITY,
+    MOTUS_FIELD_FORCE,
+    MOTUS_FIELD_INVERSE_MASS,
+    MOTUS_FIELD_COUNT
+} motus_field;
+
+/* "position", "velocity", "force", "inverse_mass" (the names motus_batch_check reports), "none" for
+   MOTUS_FIELD_NONE, NULL for a value out of range. */
+MOTUS_API const char *motus_field_name(motus_field field) {
+    switch (field) {
+    case MOTUS_FIELD_NONE: return "none";
+    case MOTUS_FIELD_POSITION: return "position";
+    case MOTUS_FIELD_VELOCITY: return "velocity";
+    case MOTUS_FIELD_FORCE: return "force";
+    case MOTUS_FIELD_INVERSE_MASS: return "inverse_mass";
+    case MOTUS_FIELD_COUNT: break;
+    }
+    return NULL;
+}
+
+/* Where a check found the first bad particle. Filled by every call that is given one, whatever the result:
+   index -1 and MOTUS_FIELD_NONE unless a particle is bad, so that it can be printed without a test. */
+typedef struct motus_check_report {
+    int index;              /* the first bad particle (its index in the array, or in the batch), or -1 */
+    motus_field field;      /* which of its fields */
+    int component;          /* 0 for x, 1 for y, 2 for z; -1 for the inverse mass and for none */
+    const char *field_name; /* motus_field_name(field), never NULL */
+} motus_check_report;
+
+MOTUS_API void motus__report(motus_check_report *report, int index, motus_field field, int component) {
+    if (!report) return;
+    report->index = index;
+    report->field = field;
+    report->component = component;
+    report->field_name = motus_field_name(field);
+}
+
+/* The first of particles[0..count) that motus_particle_check rejects, and its first bad field, in the
+   order position x, y, velocity x, y, force x, y, inverse mass (not finite), then a negative inverse mass.
+   Returns motus_particle_check's result for that particle: MOTUS_ERROR_NOT_FINITE or
+   MOTUS_ERROR_INVALID_MASS; MOTUS_OK if all are fine (count 0 included: particles may then be NULL).
+   `report` may be NULL. Reads each particle once; writes nothing but *report. */
+MOTUS_API motus_result motus_particles_check(const motus_particle *particles, int count, motus_check_report *report) {
+    int i, k;
+    motus__report(report, -1, MOTUS_FIELD_NONE, -1);
+    if (!particles && count > 0) return MOTUS_ERROR_NULL_POINTER;
+    if (count < 0) return MOTUS_ERROR_INVALID_COUNT;
+    for (i = 0; i < count; ++i) {
+        const motus_particle *p = &particles[i];
+        const motus_real values[6] = {p->position.x, p->position.y, p->velocity.x,
+                                      p->velocity.y, p->force.x,    p->force.y};
+        /* One combined test per particle: the loop that finds the field runs only for a bad particle. */
+        if (motus_particle_check(p) == MOTUS_OK) continue;
+        for (k = 0; k < 6; ++k)
+            if (!motus_real_is_finite(values[k])) {
+                motus__report(report, i, (motus_field)(MOTUS_FIELD_POSITION + k / 2), k % 2);
+                return MOTUS_ERROR_NOT_FINITE;
+            }
+        motus__report(report, i, MOTUS_FIELD_INVERSE_MASS, -1);
+        return motus_real_is_finite(p->inverse_mass) ? MOTUS_ERROR_INVALID_MASS : MOTUS_ERROR_NOT_FINITE;
+    }
+    return MOTUS_OK;
+}
+
+/* motus_batch_check with a motus_check_report: the same result and the same particle and field (same
+   name), and the component. Fields in motus_batch_check's order: the inverse mass (not finite), then per
+   dimension position, velocity, force, then a negative inverse mass. A result about the scene or the range
+   leaves index -1. */
+MOTUS_API motus_result motus_batch_check_report(const motus_scene *scene, const motus_batch *batch, int first,
+                                                int count, motus_check_report *report) {
+    int index = -1, d;
+    motus_result result;
+    motus__report(report, -1, MOTUS_FIELD_NONE, -1);
+    result = motus_batch_check(scene, batch, first, count, &index, NULL);
+    if (index < 0 || !report) return result;
+    /* motus_batch_check found particle `index` bad: which field, in its order (O(1)). */
+    if ((scene->has & MOTUS_HAS_PARTICLE_MASS) && !motus_real_is_finite(batch->inverse_mass[index])) {
+        motus__report(report, index, MOTUS_FIELD_INVERSE_MASS, -1);
+        return result;
+    }
+    for (d = 0; d < batch->dimensions; ++d) {
+        motus_field field = MOTUS_FIELD_NONE;
+        if (!motus_real_is_finite(batch->position[d][index])) field = MOTUS_FIELD_POSITION;
+        else if (!motus_real_is_finite(batch->velocity[d][index])) field = MOTUS_FIELD_VELOCITY;
+        else if ((scene->has & MOTUS_HAS_FORCES) && !motus_real_is_finite(batch->force[d][index]))
+            field = MOTUS_FIELD_FORCE;
+        if (field != MOTUS_FIELD_NONE) {
+            motus__report(report, index, field, d);
+            return result;
+        }
+    }
+    motus__report(report, index, MOTUS_FIELD_INVERSE_MASS, -1); /* finite but negative */
+    return result;
 }
 
 #ifdef __cplusplus

@@ -102,6 +102,10 @@ static int compile_batch(void) {
     batch.inverse_mass = inverse_mass;
     bad |= motus_scene_check(&scene, &batch) != MOTUS_OK;
     bad |= motus_batch_check(&scene, &batch, 0, 3, &index, &field) != MOTUS_OK || field != NULL;
+    {
+        motus_check_report report;
+        bad |= motus_batch_check_report(&scene, &batch, 0, 3, &report) != MOTUS_OK || report.index != -1;
+    }
     /* d = x0 - x1 = -2: F = -k*d + k*L*d/|d| = 20 - 10 on particle 0, the opposite on particle 1 */
     bad |= motus_batch_add_spring_forces(&batch, 3, &spring, 1) != MOTUS_OK;
     bad |= fx[0] != 10 || fx[1] != -10;
@@ -139,5 +143,14 @@ int compile_unit_a(void) {
     motus__drag_phi(0, &phi1, &phi2);
     bad |= phi1 != 1;
     bad |= motus_result_string(MOTUS_ERROR_OVERFLOW)[0] == '\0';
+    {
+        motus_check_report report;
+        motus_particle two[2];
+        two[0] = p, two[1] = wall;
+        two[1].velocity.y = (motus_real)NAN;
+        bad |= motus_particles_check(two, 2, &report) != MOTUS_ERROR_NOT_FINITE;
+        bad |= report.index != 1 || report.field != MOTUS_FIELD_VELOCITY || report.component != 1;
+        bad |= strcmp(report.field_name, motus_field_name(MOTUS_FIELD_VELOCITY)) != 0;
+    }
     return bad;
 }
