@@ -166,6 +166,7 @@ typedef enum motus_result {
     MOTUS_ERROR_SCRATCH_TOO_SMALL, /* the memory given to a stepper is smaller than it needs */
     MOTUS_ERROR_UNSUPPORTED,       /* the method cannot handle this force model (see motus_method) */
     MOTUS_ERROR_INVALID_SCENE,     /* a scene that contradicts itself or its batch (see motus_scene_check) */
+    MOTUS_ERROR_INVALID_FRAME_TIME, /* a frame time < 0, NaN or infinite (motus_clock_advance) */
     MOTUS_RESULT_COUNT
 } motus_result;
 
@@ -1619,6 +1620,134 @@ MOTUS_API motus_result motus_batch_add_spring_forces(const motus_batch *batch, i
 }
 
 /* =================================================================================================
+   Fixed-step clock: the game loop's accumulator
+   =================================================================================================
+   Frames take whatever time they take; the simulation should not (see DAMPING at the top). The clock turns
+   each frame's duration into a whole number of steps of one fixed dt and carries the rest over to the next
+   frame (G. Fiedler, "Fix your timestep", 2004):
+
+       motus_clock clock;
+       motus_clock_init(&clock, MOTUS_R(1.0) / 60, 0);        // dt 1/60 s, at most 8 steps a frame
+       // every frame:
+       int steps, i;
+       motus_clock_advance(&clock, frame_seconds, &steps);
+       for (i = 0; i < steps; ++i) { previous = p.position; ...forces...; motus_particle_step(&p, clock.fixed_dt); }
+       draw(motus_vec2_lerp(previous, p.position, motus_clock_alpha(&clock)));
+
+   The same inputs stepped through the clock give the same states at any frame rate: only the number of
+   steps per frame changes, never their dt. Drawing the state interpolated by alpha between the last two
+   steps hides the beat between frame rate and step rate, at the cost of showing the past by < 1 step.
+
+   Spiral of death: a long frame (a 2 s hitch: loading, a breakpoint, a dragged window) asks for many
+   steps, which make the next frame long too. The clock runs at most max_steps_per_frame steps and drops
+   the whole steps beyond that (the fraction of a step left over is kept, so alpha stays smooth): the game
+   slows down instead of launching everything. The fields steps_dropped_* and time_dropped_* report it.
+
+   The accumulator counts integer ticks, 2^32 to a step, rather than seconds in a motus_real: a frame of
+   exactly dt (or k*dt) is exactly 2^32 (k*2^32) ticks, so a 60 Hz game with dt 1/60 takes exactly one step
+   every frame for ever, with no comparison of two nearly equal reals; adding and subtracting ticks is
+   exact, so the leftover never drifts over a long run (a float accumulator of seconds rounds at every
+   frame, and a double one still decides "one step or none" by comparing two sums that differ by rounding);
+   the float and double builds count the same. Each frame is rounded once to the nearest tick, computed in
+   double: 2^-33 of a step at most. alpha = leftover / 2^32 is in [0, 1) by construction. */
+
+/* Steps a frame may run when motus_clock_init is given 0: 8 steps of 1/60 s cover frames up to 133 ms
+   (7.5 frames a second) before time is dropped. */
+#ifndef MOTUS_CLOCK_DEFAULT_MAX_STEPS
+#define MOTUS_CLOCK_DEFAULT_MAX_STEPS 8
+#endif
+#define MOTUS__CLOCK_TICKS_PER_STEP 4294967296.0 /* 2^32 */
+#define MOTUS__CLOCK_TICK_MASK 0xFFFFFFFFu
+
+typedef struct motus_clock {
+    motus_real fixed_dt;                 /* s, the dt of every step */
+    int max_steps_per_frame;             /* the cap against the spiral of death */
+    uint64_t accumulator;                /* ticks not stepped yet: < 2^32 (one step) between frames */
+    uint64_t steps_total;                /* steps run since init: simulated time = steps_total * fixed_dt */
+    uint64_t steps_dropped_last_frame;   /* whole steps the cap dropped in the last advance */
+    uint64_t steps_dropped_total;        /* since init */
+    motus_real time_dropped_last_frame;  /* s, dropped in the last advance */
+    double time_dropped_total;           /* s, since init; a double so that a float build's sum holds */
+} motus_clock;
+
+/* fixed_dt must be finite and > 0; max_steps_per_frame >= 0, where 0 means MOTUS_CLOCK_DEFAULT_MAX_STEPS. */
+MOTUS_API motus_result motus_clock_init(motus_clock *clock, motus_real fixed_dt, int max_steps_per_frame) {
+    if (!clock) return MOTUS_ERROR_NULL_POINTER;
+    if (!motus__is_positive_finite(fixed_dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    if (max_steps_per_frame < 0) return MOTUS_ERROR_INVALID_COUNT;
+    clock->fixed_dt = fixed_dt;
+    clock->max_steps_per_frame = max_steps_per_frame ? max_steps_per_frame : MOTUS_CLOCK_DEFAULT_MAX_STEPS;
+    clock->accumulator = 0;
+    clock->steps_total = 0;
+    clock->steps_dropped_last_frame = 0;
+    clock->steps_dropped_total = 0;
+    clock->time_dropped_last_frame = 0;
+    clock->time_dropped_total = 0;
+    return MOTUS_OK;
+}
+
+/* Adds a frame that lasted frame_seconds (finite and >= 0; 0 runs no step) and sets *steps_to_run to the
+   fixed steps to run now, at most max_steps_per_frame. A negative, NaN or infinite frame time returns
+   MOTUS_ERROR_INVALID_FRAME_TIME with the clock left as it was and *steps_to_run 0, so that a loop which
+   ignores the result runs nothing. A clock that motus_clock_init did not make is MOTUS_ERROR_INVALID_COUNT. */
+MOTUS_API motus_result motus_clock_advance(motus_clock *clock, motus_real frame_seconds, int *steps_to_run) {
+    double frame_steps, dt;
+    uint64_t ticks, steps, cap, dropped = 0;
+    motus_real time_dropped = 0;
+    if (!clock || !steps_to_run) return MOTUS_ERROR_NULL_POINTER;
+    *steps_to_run = 0;
+    if (!motus_real_is_finite(frame_seconds) || frame_seconds < 0) return MOTUS_ERROR_INVALID_FRAME_TIME;
+    if (!motus__is_positive_finite(clock->fixed_dt) || clock->max_steps_per_frame <= 0 ||
+        clock->accumulator > MOTUS__CLOCK_TICK_MASK)
+        return MOTUS_ERROR_INVALID_COUNT;
+    dt = (double)clock->fixed_dt;
+    cap = (uint64_t)clock->max_steps_per_frame;
+    frame_steps = (double)frame_seconds / dt;
+    if (frame_steps < 2147483648.0) { /* < 2^31 steps: the ticks fit in 64 bits, counted exactly */
+        ticks = clock->accumulator + (uint64_t)(frame_steps * MOTUS__CLOCK_TICKS_PER_STEP + 0.5);
+        steps = ticks >> 32;
+        clock->accumulator = ticks & MOTUS__CLOCK_TICK_MASK;
+        if (steps > cap) {
+            dropped = steps - cap;
+            time_dropped = (motus_real)((double)dropped * dt);
+            steps = cap;
+        }
+    } else { /* a frame of 2^31 steps or more (cap <= INT_MAX < 2^31): a fraction of a step is noise */
+        steps = cap;
+        dropped = frame_steps < 1.8e19 ? (uint64_t)frame_steps - cap : ~(uint64_t)0;
+        time_dropped = (motus_real)((double)frame_seconds - (double)cap * dt);
+    }
+    clock->steps_dropped_last_frame = dropped;
+    clock->steps_dropped_total += dropped;
+    clock->time_dropped_last_frame = time_dropped;
+    clock->time_dropped_total += (double)time_dropped;
+    clock->steps_total += steps;
+    *steps_to_run = (int)steps;
+    return MOTUS_OK;
+}
+
+/* How far the clock is between the last step run and the next one, in [0, 1): the weight of the newest
+   state when drawing, position = lerp(before the last step, after it, alpha). 0 for a NULL clock. */
+MOTUS_API motus_real motus_clock_alpha(const motus_clock *clock) {
+    motus_real alpha;
+    if (!clock || clock->accumulator > MOTUS__CLOCK_TICK_MASK) return 0;
+    alpha = (motus_real)((double)clock->accumulator / MOTUS__CLOCK_TICKS_PER_STEP);
+    /* In float a leftover within 2^-25 of a step rounds up to 1: keep alpha below 1 as promised. */
+    return alpha < 1 ? alpha : 1 - MOTUS_REAL_EPSILON / 2;
+}
+
+/* Simulated seconds since init: steps_total * fixed_dt, in double (exact up to 2^53 steps' rounding). */
+MOTUS_API double motus_clock_time(const motus_clock *clock) {
+    if (!clock) return 0;
+    return (double)clock->steps_total * (double)clock->fixed_dt;
+}
+
+/* a + (b - a)*t: t = 0 gives a exactly; for drawing a state between two steps with t = motus_clock_alpha. */
+MOTUS_API motus_vec2 motus_vec2_lerp(motus_vec2 a, motus_vec2 b, motus_real t) {
+    return motus_vec2_add(a, motus_vec2_scale(motus_vec2_sub(b, a), t));
+}
+
+/* =================================================================================================
    Validation and messages
    ================================================================================================= */
 MOTUS_API const char *motus_result_string(motus_result result) {
@@ -1638,6 +1767,7 @@ MOTUS_API const char *motus_result_string(motus_result result) {
         return "scene invalid: unknown MOTUS_HAS_* bit, both dampings, dimensions not 2 or 3, or bounds min > max";
     case MOTUS_ERROR_UNSUPPORTED:
         return "this method cannot integrate these forces (the exact stepper takes gravity and linear drag only)";
+    case MOTUS_ERROR_INVALID_FRAME_TIME: return "frame time must be finite and >= 0 seconds; the clock was left as it was";
     case MOTUS_RESULT_COUNT: break;
     }
     return "unknown motus_result value";
