@@ -55,6 +55,10 @@
    - MOTUS_NO_SIMD         (undefined)      batch kernels one particle at a time (the results are the same).
    - MOTUS_CHECKED         (undefined)      motus_batch_step checks every particle of its range before
                                             writing anything (see "Batch kernels": release builds don't).
+   - MOTUS_REST_SPEED      (1e-30f; 1e-300 with MOTUS_DOUBLE)  m/s: damping sets a velocity component
+                                            whose magnitude falls below this to zero (see SUBNORMALS). 0
+                                            turns the flush off.
+   - MOTUS_CLOCK_DEFAULT_MAX_STEPS (8)      steps a motus_clock runs per frame when given 0.
 
    DAMPING: PER STEP OR PER SECOND
    ===============================
@@ -66,6 +70,18 @@
    ran at a fixed rate, use motus_damping_per_second_from_per_step(0.99, 60) = 0.547.
    `motus_particle_step_linear_drag` goes one step further: it solves m*dv/dt = F - m*k*v exactly over the
    step (F held constant), so the position too is the same at 30, 60 or 144 steps a second, up to rounding.
+
+   SUBNORMALS
+   ==========
+   Damping multiplies a velocity by a factor < 1 every step, so a particle left alone slows down
+   geometrically: with 0.99 a step, 1 m/s goes below FLT_MIN (1.2e-38) after some 8,700 steps and then
+   spends ~1,600 more steps among the subnormal numbers before it reaches 0. Arithmetic on subnormals takes
+   a slow path on many x86 cores (a microcode assist: tens to hundreds of cycles per operation), and
+   v*dt is subnormal too. motus_particle_damp_per_step / _per_second and the batch kernels' damping
+   therefore set a velocity component whose magnitude is below MOTUS_REST_SPEED to zero (keeping its
+   sign): 1e-30 m/s in float, a round number above FLT_MIN/1e-7 = 1.2e-31 so that v*dt stays a normal
+   float for any dt >= 1e-7 s, and far below anything a game can see (1e-300 in double). bench/subnormal
+   measures the cost with and without the flush.
 */
 #ifndef MOTUS_H
 #define MOTUS_H
@@ -132,6 +148,14 @@ typedef uint32_t motus__bits;
 #define MOTUS_EXP(x) expf(x)
 #define MOTUS_EXPM1(x) expm1f(x)
 #define MOTUS_POW(x, y) powf(x, y)
+#endif
+#endif
+
+#ifndef MOTUS_REST_SPEED
+#ifdef MOTUS_DOUBLE
+#define MOTUS_REST_SPEED 1e-300
+#else
+#define MOTUS_REST_SPEED 1e-30f
 #endif
 #endif
 
@@ -307,26 +331,40 @@ MOTUS_API motus_result motus_particle_step(motus_particle *particle, motus_real 
 
 MOTUS_API int motus__damping_is_valid(motus_real factor) { return factor >= 0 && factor <= 1; } /* NaN fails */
 
+/* A damped velocity: v*factor, each component below MOTUS_REST_SPEED in magnitude set to a zero of its sign
+   so that it never lingers among the subnormals (see SUBNORMALS at the top). The batch kernels do the same
+   lane by lane. */
+MOTUS_API motus_vec2 motus__damp(motus_vec2 velocity, motus_real factor) {
+    const motus_real rest = (motus_real)(MOTUS_REST_SPEED);
+    motus_vec2 v = motus_vec2_scale(velocity, factor);
+    if (v.x < rest && v.x > -rest) v.x = v.x * 0;
+    if (v.y < rest && v.y > -rest) v.y = v.y * 0;
+    return v;
+}
+
 /* v *= factor_per_step, as the reference program does with 0.99 each frame. Frame-rate dependent: see
-   DAMPING at the top. factor_per_step must be in [0, 1]: 1 keeps all speed, 0 stops the particle. */
+   DAMPING at the top. factor_per_step must be in [0, 1]: 1 keeps all speed, 0 stops the particle; above 1,
+   negative or NaN is MOTUS_ERROR_INVALID_DAMPING (damping that adds energy or flips the velocity is not
+   damping). Speeds below MOTUS_REST_SPEED become 0 (see SUBNORMALS). */
 MOTUS_API motus_result motus_particle_damp_per_step(motus_particle *particle, motus_real factor_per_step) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     if (!motus__damping_is_valid(factor_per_step)) return MOTUS_ERROR_INVALID_DAMPING;
     if (!motus_vec2_is_finite(particle->velocity)) return MOTUS_ERROR_NOT_FINITE;
-    particle->velocity = motus_vec2_scale(particle->velocity, factor_per_step);
+    particle->velocity = motus__damp(particle->velocity, factor_per_step);
     return MOTUS_OK;
 }
 
 /* v *= retained_per_second^dt: after one second of steps the speed is retained_per_second times what it
-   was, whatever dt was. retained_per_second must be in [0, 1]. Equivalent to linear drag with rate
-   k = -ln(retained_per_second) applied to the velocity alone. */
+   was, whatever dt was. retained_per_second must be in [0, 1] (0 stops the particle at any dt, 1 keeps all
+   speed; the rest is MOTUS_ERROR_INVALID_DAMPING, as for damp_per_step). Equivalent to linear drag with
+   rate k = -ln(retained_per_second) applied to the velocity alone. Speeds below MOTUS_REST_SPEED become 0. */
 MOTUS_API motus_result motus_particle_damp_per_second(motus_particle *particle, motus_real retained_per_second,
                                                       motus_real dt) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (!motus__damping_is_valid(retained_per_second)) return MOTUS_ERROR_INVALID_DAMPING;
     if (!motus_vec2_is_finite(particle->velocity)) return MOTUS_ERROR_NOT_FINITE;
-    particle->velocity = motus_vec2_scale(particle->velocity, MOTUS_POW(retained_per_second, dt));
+    particle->velocity = motus__damp(particle->velocity, MOTUS_POW(retained_per_second, dt));
     return MOTUS_OK;
 }
 
@@ -417,6 +455,37 @@ MOTUS_API motus_result motus_particle_step_linear_drag(motus_particle *particle,
                               motus_vec2_add(motus_vec2_scale(particle->velocity, dt * phi1),
                                              motus_vec2_scale(acceleration, dt * dt * phi2)));
     return motus__commit_step(particle, velocity, position);
+}
+
+/* Far from the origin a float position has few digits left for the motion: at x = 1e6 m one ulp is
+   0.0625 m, so a step of 1 m/s * 1/60 s (0.017 m, under half an ulp) rounds away and the particle never
+   moves. Two remedies: the double build (MOTUS_DOUBLE; ulp 1.2e-10 m at 1e6 m), or this step, which keeps
+   what each position update rounded away in a carry the caller holds (one per particle, {0, 0} to start)
+   and adds it back on the next step, so that small steps accumulate (Kahan's compensated summation, with
+   Knuth's TwoSum for the exact rounding error of x + dx, any magnitudes):
+       dx = v_new*dt + carry;  x' = fl(x + dx);  carry' = (x + dx) - x'   (exact: TwoSum)
+   x + carry is then the position to about float precision squared; the stored position is within half
+   an ulp of it. The velocity is motus_particle_step's, bit for bit; with carry {0, 0} the first position
+   is too. Reset the carry to {0, 0} when the game moves the particle by hand. Needs IEEE arithmetic as
+   written: -ffast-math may reassociate TwoSum into carry = 0. On any error neither the particle nor the
+   carry is written. */
+MOTUS_API motus_result motus_particle_step_compensated(motus_particle *particle, motus_vec2 *carry, motus_real dt) {
+    motus_vec2 velocity, delta, sum, back, error;
+    motus_result result;
+    if (!particle || !carry) return MOTUS_ERROR_NULL_POINTER;
+    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    if (particle->inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
+    if (!motus_vec2_is_finite(*carry)) return MOTUS_ERROR_NOT_FINITE;
+    velocity = motus_vec2_add(particle->velocity, motus_vec2_scale(motus_vec2_scale(particle->force, particle->inverse_mass), dt));
+    delta = motus_vec2_add(motus_vec2_scale(velocity, dt), *carry);
+    sum = motus_vec2_add(particle->position, delta);
+    back = motus_vec2_sub(sum, particle->position);                             /* the part of delta that landed */
+    error = motus_vec2_add(motus_vec2_sub(particle->position, motus_vec2_sub(sum, back)), /* TwoSum */
+                           motus_vec2_sub(delta, back));
+    /* A finite sum of finite terms has a finite TwoSum error: checking velocity and sum covers the carry. */
+    result = motus__commit_step(particle, velocity, sum);
+    if (result == MOTUS_OK) *carry = error;
+    return result;
 }
 
 /* =================================================================================================
@@ -1029,7 +1098,7 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
    Per particle and step, in this order (SI units; * is per component):
        a = F*inverse_mass + gravity - k*v - c*|v|*v - mu*r/|r|^3     (r from the attractor)
        v += a*h;  x += v*h           (semi-implicit Euler; explicit Euler moves x with the old v)
-       v *= damping                  (per step), or damping^h (per second)
+       v *= damping                  (per step), or damping^h (per second); |v| < MOTUS_REST_SPEED -> 0
        bounds: past a wall, x is mirrored back and v *= -restitution; then x is clamped into the box
    Springs couple particles, so they are not part of the per-range step: motus_batch_add_spring_forces
    adds their forces to the force arrays for the whole batch first (2D).
@@ -1194,7 +1263,7 @@ MOTUS__INLINE motus__lane motus__select(motus__mask mask, motus__lane a, motus__
 
 /* The step's constants, worked out once per call. */
 typedef struct motus__kernel_constants {
-    motus_real h, gravity[3], linear_drag, quadratic_drag, damping, inverse_mass;
+    motus_real h, gravity[3], linear_drag, quadratic_drag, damping, rest_speed, inverse_mass;
     motus_real attractor[3], attractor_strength, bounds_min[3], bounds_max[3], restitution;
     int semi_implicit, has_gravity, has_linear_drag;
 } motus__kernel_constants;
@@ -1211,7 +1280,7 @@ typedef struct motus__kernel_constants {
 /* The constants as lanes, made once per call so that the loop does not redo them (nor reload them: the
    arrays it stores to could alias a motus_real in memory, but not these locals). */
 typedef struct motus__kernel_lanes {
-    motus__lane h, gravity[3], linear_drag, quadratic_drag, damping, inverse_mass;
+    motus__lane h, gravity[3], linear_drag, quadratic_drag, damping, rest_speed, inverse_mass;
     motus__lane attractor[3], attractor_strength, bounds_min[3], bounds_max[3], bounce;
     motus__mask semi_implicit, has_quadratic_drag, has_attractor, has_gravity, has_linear_drag;
     motus__lane uniform_movable;
@@ -1284,7 +1353,10 @@ MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus
             x[d] = x[d] + motus__select(k->semi_implicit, v[d], old_velocity) * h;
         else
             x[d] = x[d] + v[d] * h;
-        if (flags & MOTUS__K_DAMPING) v[d] = v[d] * k->damping;
+        if (flags & MOTUS__K_DAMPING) { /* as motus__damp: slow components to a zero of their sign */
+            v[d] = v[d] * k->damping;
+            v[d] = motus__select((v[d] < k->rest_speed) & (v[d] > -k->rest_speed), v[d] * zero, v[d]);
+        }
         /* Checked before the bounds, whose clamp would turn an infinite position into the wall; explicit
            Euler's new velocity does not reach its position, so the general kernel adds it too. */
         check[d] = check[d] + x[d];
@@ -1341,6 +1413,7 @@ MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int co
     k.linear_drag = motus__splat(c->linear_drag);
     k.quadratic_drag = motus__splat(c->quadratic_drag);
     k.damping = motus__splat(c->damping);
+    k.rest_speed = motus__splat(c->rest_speed);
     k.inverse_mass = motus__splat(c->inverse_mass);
     k.attractor_strength = motus__splat(c->attractor_strength);
     k.bounce = motus__splat(-c->restitution);
@@ -1525,6 +1598,7 @@ MOTUS_API motus_result motus_batch_step(const motus_scene *scene, const motus_ba
     k.h = dt;
     k.linear_drag = k.quadratic_drag = k.attractor_strength = k.restitution = 0;
     k.damping = 1;
+    k.rest_speed = 0; /* no flush without damping (the general kernel always "damps", by 1) */
     k.semi_implicit = scene->method == MOTUS_SEMI_IMPLICIT_EULER;
     k.has_gravity = k.has_linear_drag = 0;
     k.inverse_mass = (has & MOTUS_HAS_PARTICLE_MASS) ? 0 : scene->inverse_mass;
@@ -1550,6 +1624,7 @@ MOTUS_API motus_result motus_batch_step(const motus_scene *scene, const motus_ba
     }
     if (has & MOTUS_HAS_DAMPING_PER_STEP) k.damping = scene->damping;
     if (has & MOTUS_HAS_DAMPING_PER_SECOND) k.damping = MOTUS_POW(scene->damping, dt); /* as damp_per_second */
+    if (motus__scene_damping_flags(has)) k.rest_speed = (motus_real)(MOTUS_REST_SPEED);
     if (has & MOTUS_HAS_BOUNDS) {
         for (d = 0; d < batch->dimensions; ++d) {
             k.bounds_min[d] = scene->bounds_min[d];
