@@ -1105,9 +1105,11 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
 
    Checks: the scene and the arguments are checked on every call (O(1)). The particle data is not read
    twice in release builds: the kernel sums what it writes, and a NaN or Inf in the new state makes the
-   step return MOTUS_ERROR_NOT_FINITE after the range was written. Define MOTUS_CHECKED to have every step
-   check its range first (motus_batch_check) and write nothing on bad data; or call motus_batch_check
-   yourself where data comes in. */
+   step return MOTUS_ERROR_NOT_FINITE after the range was written (overflow included: the inputs are gone,
+   so the step cannot tell it from bad data). Define MOTUS_CHECKED to have every step check its range first
+   (motus_batch_check) and write nothing on bad data, then run the step once without storing anything (a
+   dry run) and return MOTUS_ERROR_OVERFLOW, again with nothing written, if a result would not be finite:
+   a checked step reads its range three times. Or call motus_batch_check yourself where data comes in. */
 
 enum {
     MOTUS_HAS_GRAVITY = 1u << 0,            /* scene.gravity */
@@ -1276,6 +1278,7 @@ typedef struct motus__kernel_constants {
 #define MOTUS__K_FORCES 16
 #define MOTUS__K_BOUNDS 32
 #define MOTUS__K_GENERAL 64
+#define MOTUS__K_DRY 128 /* MOTUS_CHECKED's dry run: compute and check, store nothing */
 
 /* The constants as lanes, made once per call so that the loop does not redo them (nor reload them: the
    arrays it stores to could alias a motus_real in memory, but not these locals). */
@@ -1309,6 +1312,9 @@ typedef struct motus__arrays {
    the compiler drops every term, load and store the scene does not have. Adds the new positions to
    check[]: a sum that is NaN or infinite if any new value is (a non-finite velocity always makes its
    position non-finite too), one sum per dimension so that the additions do not wait on each other. */
+/* The dry run adds value - value: 0 where finite, NaN where not, a sum that cannot overflow on large finite
+   values (it has no values to look at afterwards, as the step has). */
+#define MOTUS__CHECK_ADD(sum, value) ((flags & MOTUS__K_DRY) ? (sum) + ((value) - (value)) : (sum) + (value))
 MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus__kernel_lanes *k,
                                       const int dims, const int flags, motus__lane *check) {
     const int n = MOTUS__LANES;
@@ -1342,7 +1348,7 @@ MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus
     if (flags & MOTUS__K_MASS) { /* immovable particles: no acceleration (a NaN passes on) */
         motus__lane movable = motus__select(inverse_mass != zero, motus__splat(1), zero);
         MOTUS__EACH_DIM(a[d] = a[d] * movable;);
-        MOTUS__EACH_DIM(check[d] = check[d] + inverse_mass;); /* a NaN mass shows even without forces */
+        MOTUS__EACH_DIM(check[d] = MOTUS__CHECK_ADD(check[d], inverse_mass);); /* a NaN mass shows even without forces */
     } else if (flags & MOTUS__K_GENERAL) { /* a uniform inverse mass of 0 comes here: nothing accelerates */
         MOTUS__EACH_DIM(a[d] = a[d] * k->uniform_movable;);
     }
@@ -1359,8 +1365,8 @@ MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus
         }
         /* Checked before the bounds, whose clamp would turn an infinite position into the wall; explicit
            Euler's new velocity does not reach its position, so the general kernel adds it too. */
-        check[d] = check[d] + x[d];
-        if (flags & MOTUS__K_GENERAL) check[d] = check[d] + v[d];
+        check[d] = MOTUS__CHECK_ADD(check[d], x[d]);
+        if (flags & MOTUS__K_GENERAL) check[d] = MOTUS__CHECK_ADD(check[d], v[d]);
         if (flags & MOTUS__K_BOUNDS) { /* as motus_particle_bounce: mirror, bounce, then clamp */
             motus__mask below = x[d] < k->bounds_min[d], above, finite;
             x[d] = motus__select(below, k->bounds_min[d] + (k->bounds_min[d] - x[d]), x[d]);
@@ -1373,8 +1379,10 @@ MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus
             x[d] = motus__select((x[d] < k->bounds_min[d]) & finite, k->bounds_min[d], x[d]);
             x[d] = motus__select((x[d] > k->bounds_max[d]) & finite, k->bounds_max[d], x[d]);
         }
-        motus__store(b->position[d] + i, x[d], n);
-        motus__store(b->velocity[d] + i, v[d], n);
+        if (!(flags & MOTUS__K_DRY)) {
+            motus__store(b->position[d] + i, x[d], n);
+            motus__store(b->velocity[d] + i, v[d], n);
+        }
     );
 }
 
@@ -1453,7 +1461,8 @@ MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int co
         if (part_length[part] == 0) continue;
         motus__partial_copy(&arrays, part_start[part], &partial, part_length[part], dims, flags, 1);
         motus__batch_lanes(&partial, 0, &k, dims, flags, check);
-        motus__partial_copy(&arrays, part_start[part], &partial, part_length[part], dims, flags, 0);
+        if (!(flags & MOTUS__K_DRY))
+            motus__partial_copy(&arrays, part_start[part], &partial, part_length[part], dims, flags, 0);
     }
     check[0] = check[0] + check[1] + check[2];
 #if MOTUS__VECTOR
@@ -1495,6 +1504,25 @@ MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int co
 MOTUS__KERNEL_DISPATCH(motus__batch_dispatch2, 2)
 MOTUS__KERNEL_DISPATCH(motus__batch_dispatch3, 3)
 #undef MOTUS__KERNEL_DISPATCH
+#ifdef MOTUS_CHECKED
+/* The step without its stores, through the general kernel: it computes every term with neutral values for
+   what the scene lacks, so it gives the values any kernel gives. Nonzero if one would not be finite. Only
+   checked builds compile these 8 kernels. */
+MOTUS_API int motus__batch_dry_run(const motus_batch *b, int first, int count, const motus__kernel_constants *k,
+                                   int flags) {
+    const int dry = MOTUS__GENERAL | MOTUS__K_DRY;
+    switch ((flags & (MOTUS__K_MASS | MOTUS__K_FORCES)) + (b->dimensions == 3 ? 1 : 0)) {
+    case 0: return motus__batch_range(b, first, count, k, 2, dry);
+    case 1: return motus__batch_range(b, first, count, k, 3, dry);
+    case MOTUS__K_MASS: return motus__batch_range(b, first, count, k, 2, dry | MOTUS__K_MASS);
+    case MOTUS__K_MASS + 1: return motus__batch_range(b, first, count, k, 3, dry | MOTUS__K_MASS);
+    case MOTUS__K_FORCES: return motus__batch_range(b, first, count, k, 2, dry | MOTUS__K_FORCES);
+    case MOTUS__K_FORCES + 1: return motus__batch_range(b, first, count, k, 3, dry | MOTUS__K_FORCES);
+    case MOTUS__K_MASS + MOTUS__K_FORCES: return motus__batch_range(b, first, count, k, 2, dry | MOTUS__K_MASS | MOTUS__K_FORCES);
+    default: return motus__batch_range(b, first, count, k, 3, dry | MOTUS__K_MASS | MOTUS__K_FORCES);
+    }
+}
+#endif
 #undef MOTUS__KERNEL_CASES_8
 #undef MOTUS__KERNEL_CASE
 
@@ -1577,8 +1605,9 @@ MOTUS_API motus_result motus_batch_check(const motus_scene *scene, const motus_b
 
 /* Steps particles [first, first + count) of `batch` by dt through `scene` (see the top of this section).
    Thread-safe for ranges that do not overlap. Release builds: on MOTUS_ERROR_NOT_FINITE the range was
-   written (the data had NaN/Inf, or overflowed); with MOTUS_CHECKED, bad data is found first and nothing is
-   written. Every other error is found before anything is written. */
+   written (the data had NaN/Inf, or overflowed); with MOTUS_CHECKED, bad data (MOTUS_ERROR_NOT_FINITE) and
+   overflow (MOTUS_ERROR_OVERFLOW) are found first and nothing is written. Every other error is found before
+   anything is written. */
 MOTUS_API motus_result motus_batch_step(const motus_scene *scene, const motus_batch *batch, int first, int count,
                                         motus_real dt) {
     motus__kernel_constants k;
@@ -1643,6 +1672,11 @@ MOTUS_API motus_result motus_batch_step(const motus_scene *scene, const motus_ba
         (!(has & MOTUS_HAS_PARTICLE_MASS) && scene->inverse_mass == 0))
         flags = (flags & (MOTUS__K_MASS | MOTUS__K_FORCES)) | MOTUS__GENERAL; /* gravity, drag: by mask */
 
+#ifdef MOTUS_CHECKED
+    /* The range was checked finite above: a non-finite result can only be an overflow. Find it before
+       writing anything. */
+    if (motus__batch_dry_run(batch, first, count, &k, flags)) return MOTUS_ERROR_OVERFLOW;
+#endif
     broken = batch->dimensions == 2 ? motus__batch_dispatch2(batch, first, count, &k, flags)
                                     : motus__batch_dispatch3(batch, first, count, &k, flags);
     if (broken < 0) return MOTUS_ERROR_UNSUPPORTED; /* cannot happen: every flag combination has a kernel */
