@@ -75,9 +75,9 @@
    ==========
    Damping multiplies a velocity by a factor < 1 every step, so a particle left alone slows down
    geometrically: with 0.99 a step, 1 m/s goes below FLT_MIN (1.2e-38) after some 8,700 steps and then
-   spends ~1,600 more steps among the subnormal numbers before it reaches 0. Arithmetic on subnormals takes
-   a slow path on many x86 cores (a microcode assist: tens to hundreds of cycles per operation), and
-   v*dt is subnormal too. motus_particle_damp_per_step / _per_second and the batch kernels' damping
+   never leaves the subnormal numbers: below 50 times the smallest one, 0.99*v rounds back to v.
+   Arithmetic on subnormals takes a slow path on many x86 cores (a microcode assist: tens to hundreds of
+   cycles per operation), and v*dt is subnormal too. motus_particle_damp_per_step / _per_second and the batch kernels' damping
    therefore set a velocity component whose magnitude is below MOTUS_REST_SPEED to zero (keeping its
    sign): 1e-30 m/s in float, a round number above FLT_MIN/1e-7 = 1.2e-31 so that v*dt stays a normal
    float for any dt >= 1e-7 s, and far below anything a game can see (1e-300 in double). bench/subnormal
