@@ -58,6 +58,10 @@
    - MOTUS_CHECKED         (undefined)      motus_batch_step checks every particle of its range, and
                                             motus_batch_add_spring_forces every spring, before writing
                                             anything (see "Validation and messages": release builds don't).
+   - MOTUS_REST_SPEED      (1e-30f; 1e-300 with MOTUS_DOUBLE)  m/s: damping sets a velocity component
+                                            whose magnitude falls below this to zero (see SUBNORMALS). 0
+                                            turns the flush off.
+   - MOTUS_CLOCK_DEFAULT_MAX_STEPS (8)      steps a motus_clock runs per frame when given 0.
 
    DAMPING: PER STEP OR PER SECOND
    ===============================
@@ -69,6 +73,18 @@
    ran at a fixed rate, use motus_damping_per_second_from_per_step(0.99, 60) = 0.547.
    `motus_particle_step_linear_drag` goes one step further: it solves m*dv/dt = F - m*k*v exactly over the
    step (F held constant), so the position too is the same at 30, 60 or 144 steps a second, up to rounding.
+
+   SUBNORMALS
+   ==========
+   Damping multiplies a velocity by a factor < 1 every step, so a particle left alone slows down
+   geometrically: with 0.99 a step, 1 m/s goes below FLT_MIN (1.2e-38) after some 8,700 steps and then
+   never leaves the subnormal numbers: below 50 times the smallest one, 0.99*v rounds back to v.
+   Arithmetic on subnormals takes a slow path on many x86 cores (a microcode assist: tens to hundreds of
+   cycles per operation), and v*dt is subnormal too. motus_particle_damp_per_step / _per_second and the batch kernels' damping
+   therefore set a velocity component whose magnitude is below MOTUS_REST_SPEED to zero (keeping its
+   sign): 1e-30 m/s in float, a round number above FLT_MIN/1e-7 = 1.2e-31 so that v*dt stays a normal
+   float for any dt >= 1e-7 s, and far below anything a game can see (1e-300 in double). bench/subnormal
+   measures the cost with and without the flush.
 */
 #ifndef MOTUS_H
 #define MOTUS_H
@@ -138,6 +154,14 @@ typedef uint32_t motus__bits;
 #endif
 #endif
 
+#ifndef MOTUS_REST_SPEED
+#ifdef MOTUS_DOUBLE
+#define MOTUS_REST_SPEED 1e-300
+#else
+#define MOTUS_REST_SPEED 1e-30f
+#endif
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -172,6 +196,7 @@ typedef enum motus_result {
     MOTUS_ERROR_TOO_STIFF,         /* more substeps needed than allowed, or no dt is stable for the method */
     MOTUS_ERROR_INVALID_ARGUMENT,  /* an argument out of its documented range (safety factor, substep cap) */
     MOTUS_ERROR_INVALID_DESC,      /* a desc with unknown flag bits, or scratch not aligned for motus_real */
+    MOTUS_ERROR_INVALID_FRAME_TIME, /* a frame time < 0, NaN or infinite (motus_clock_advance) */
     MOTUS_RESULT_COUNT
 } motus_result;
 
@@ -323,26 +348,40 @@ MOTUS_API motus_result motus_particle_step(motus_particle *particle, motus_real 
 
 MOTUS_API int motus__damping_is_valid(motus_real factor) { return factor >= 0 && factor <= 1; } /* NaN fails */
 
+/* A damped velocity: v*factor, each component below MOTUS_REST_SPEED in magnitude set to a zero of its sign
+   so that it never lingers among the subnormals (see SUBNORMALS at the top). The batch kernels do the same
+   lane by lane. */
+MOTUS_API motus_vec2 motus__damp(motus_vec2 velocity, motus_real factor) {
+    const motus_real rest = (motus_real)(MOTUS_REST_SPEED);
+    motus_vec2 v = motus_vec2_scale(velocity, factor);
+    if (v.x < rest && v.x > -rest) v.x = v.x * 0;
+    if (v.y < rest && v.y > -rest) v.y = v.y * 0;
+    return v;
+}
+
 /* v *= factor_per_step, as the reference program does with 0.99 each frame. Frame-rate dependent: see
-   DAMPING at the top. factor_per_step must be in [0, 1]: 1 keeps all speed, 0 stops the particle. */
+   DAMPING at the top. factor_per_step must be in [0, 1]: 1 keeps all speed, 0 stops the particle; above 1,
+   negative or NaN is MOTUS_ERROR_INVALID_DAMPING (damping that adds energy or flips the velocity is not
+   damping). Speeds below MOTUS_REST_SPEED become 0 (see SUBNORMALS). */
 MOTUS_API motus_result motus_particle_damp_per_step(motus_particle *particle, motus_real factor_per_step) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     if (!motus__damping_is_valid(factor_per_step)) return MOTUS_ERROR_INVALID_DAMPING;
     if (!motus_vec2_is_finite(particle->velocity)) return MOTUS_ERROR_NOT_FINITE;
-    particle->velocity = motus_vec2_scale(particle->velocity, factor_per_step);
+    particle->velocity = motus__damp(particle->velocity, factor_per_step);
     return MOTUS_OK;
 }
 
 /* v *= retained_per_second^dt: after one second of steps the speed is retained_per_second times what it
-   was, whatever dt was. retained_per_second must be in [0, 1]. Equivalent to linear drag with rate
-   k = -ln(retained_per_second) applied to the velocity alone. */
+   was, whatever dt was. retained_per_second must be in [0, 1] (0 stops the particle at any dt, 1 keeps all
+   speed; the rest is MOTUS_ERROR_INVALID_DAMPING, as for damp_per_step). Equivalent to linear drag with
+   rate k = -ln(retained_per_second) applied to the velocity alone. Speeds below MOTUS_REST_SPEED become 0. */
 MOTUS_API motus_result motus_particle_damp_per_second(motus_particle *particle, motus_real retained_per_second,
                                                       motus_real dt) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (!motus__damping_is_valid(retained_per_second)) return MOTUS_ERROR_INVALID_DAMPING;
     if (!motus_vec2_is_finite(particle->velocity)) return MOTUS_ERROR_NOT_FINITE;
-    particle->velocity = motus_vec2_scale(particle->velocity, MOTUS_POW(retained_per_second, dt));
+    particle->velocity = motus__damp(particle->velocity, MOTUS_POW(retained_per_second, dt));
     return MOTUS_OK;
 }
 
@@ -433,6 +472,37 @@ MOTUS_API motus_result motus_particle_step_linear_drag(motus_particle *particle,
                               motus_vec2_add(motus_vec2_scale(particle->velocity, dt * phi1),
                                              motus_vec2_scale(acceleration, dt * dt * phi2)));
     return motus__commit_step(particle, velocity, position);
+}
+
+/* Far from the origin a float position has few digits left for the motion: at x = 1e6 m one ulp is
+   0.0625 m, so a step of 1 m/s * 1/60 s (0.017 m, under half an ulp) rounds away and the particle never
+   moves. Two remedies: the double build (MOTUS_DOUBLE; ulp 1.2e-10 m at 1e6 m), or this step, which keeps
+   what each position update rounded away in a carry the caller holds (one per particle, {0, 0} to start)
+   and adds it back on the next step, so that small steps accumulate (Kahan's compensated summation, with
+   Knuth's TwoSum for the exact rounding error of x + dx, any magnitudes):
+       dx = v_new*dt + carry;  x' = fl(x + dx);  carry' = (x + dx) - x'   (exact: TwoSum)
+   x + carry is then the position to about float precision squared; the stored position is within half
+   an ulp of it. The velocity is motus_particle_step's, bit for bit; with carry {0, 0} the first position
+   is too. Reset the carry to {0, 0} when the game moves the particle by hand. Needs IEEE arithmetic as
+   written: -ffast-math may reassociate TwoSum into carry = 0. On any error neither the particle nor the
+   carry is written. */
+MOTUS_API motus_result motus_particle_step_compensated(motus_particle *particle, motus_vec2 *carry, motus_real dt) {
+    motus_vec2 velocity, delta, sum, back, error;
+    motus_result result;
+    if (!particle || !carry) return MOTUS_ERROR_NULL_POINTER;
+    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    if (particle->inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
+    if (!motus_vec2_is_finite(*carry)) return MOTUS_ERROR_NOT_FINITE;
+    velocity = motus_vec2_add(particle->velocity, motus_vec2_scale(motus_vec2_scale(particle->force, particle->inverse_mass), dt));
+    delta = motus_vec2_add(motus_vec2_scale(velocity, dt), *carry);
+    sum = motus_vec2_add(particle->position, delta);
+    back = motus_vec2_sub(sum, particle->position);                             /* the part of delta that landed */
+    error = motus_vec2_add(motus_vec2_sub(particle->position, motus_vec2_sub(sum, back)), /* TwoSum */
+                           motus_vec2_sub(delta, back));
+    /* A finite sum of finite terms has a finite TwoSum error: checking velocity and sum covers the carry. */
+    result = motus__commit_step(particle, velocity, sum);
+    if (result == MOTUS_OK) *carry = error;
+    return result;
 }
 
 /* =================================================================================================
@@ -1275,16 +1345,18 @@ MOTUS_API motus_result motus_stepper_step_substepped(motus_stepper *stepper, mot
    Per particle and step, in this order (SI units; * is per component):
        a = F*inverse_mass + gravity - k*v - c*|v|*v - mu*r/|r|^3     (r from the attractor)
        v += a*h;  x += v*h           (semi-implicit Euler; explicit Euler moves x with the old v)
-       v *= damping                  (per step), or damping^h (per second)
+       v *= damping                  (per step), or damping^h (per second); |v| < MOTUS_REST_SPEED -> 0
        bounds: past a wall, x is mirrored back and v *= -restitution; then x is clamped into the box
    Springs couple particles, so they are not part of the per-range step: motus_batch_add_spring_forces
    adds their forces to the force arrays for the whole batch first (2D).
 
    Checks: the scene and the arguments are checked on every call (O(1)). The particle data is not read
    twice in release builds: the kernel sums what it writes, and a NaN or Inf in the new state makes the
-   step return MOTUS_ERROR_NOT_FINITE after the range was written. Define MOTUS_CHECKED to have every step
-   check its range first (motus_batch_check) and write nothing on bad data; or call motus_batch_check
-   yourself where data comes in. */
+   step return MOTUS_ERROR_NOT_FINITE after the range was written (overflow included: the inputs are gone,
+   so the step cannot tell it from bad data). Define MOTUS_CHECKED to have every step check its range first
+   (motus_batch_check) and write nothing on bad data, then run the step once without storing anything (a
+   dry run) and return MOTUS_ERROR_OVERFLOW, again with nothing written, if a result would not be finite:
+   a checked step reads its range three times. Or call motus_batch_check yourself where data comes in. */
 
 enum {
     MOTUS_HAS_GRAVITY = 1u << 0,            /* scene.gravity */
@@ -1440,7 +1512,7 @@ MOTUS__INLINE motus__lane motus__select(motus__mask mask, motus__lane a, motus__
 
 /* The step's constants, worked out once per call. */
 typedef struct motus__kernel_constants {
-    motus_real h, gravity[3], linear_drag, quadratic_drag, damping, inverse_mass;
+    motus_real h, gravity[3], linear_drag, quadratic_drag, damping, rest_speed, inverse_mass;
     motus_real attractor[3], attractor_strength, bounds_min[3], bounds_max[3], restitution;
     int semi_implicit, has_gravity, has_linear_drag;
 } motus__kernel_constants;
@@ -1455,11 +1527,12 @@ typedef struct motus__kernel_constants {
 #define MOTUS__K_GENERAL 64
 #define MOTUS__K_CHANGES_VELOCITY \
     (MOTUS__K_GRAVITY | MOTUS__K_LINEAR_DRAG | MOTUS__K_DAMPING | MOTUS__K_FORCES | MOTUS__K_BOUNDS | MOTUS__K_GENERAL)
+#define MOTUS__K_DRY 128 /* MOTUS_CHECKED's dry run: compute and check, store nothing */
 
 /* The constants as lanes, made once per call so that the loop does not redo them (nor reload them: the
    arrays it stores to could alias a motus_real in memory, but not these locals). */
 typedef struct motus__kernel_lanes {
-    motus__lane h, gravity[3], linear_drag, quadratic_drag, damping, inverse_mass;
+    motus__lane h, gravity[3], linear_drag, quadratic_drag, damping, rest_speed, inverse_mass;
     motus__lane attractor[3], attractor_strength, bounds_min[3], bounds_max[3], bounce;
     motus__mask semi_implicit, has_quadratic_drag, has_attractor, has_gravity, has_linear_drag;
     motus__lane uniform_movable;
@@ -1488,6 +1561,9 @@ typedef struct motus__arrays {
    the compiler drops every term, load and store the scene does not have. Adds the new positions to
    check[]: a sum that is NaN or infinite if any new value is (a non-finite velocity always makes its
    position non-finite too), one sum per dimension so that the additions do not wait on each other. */
+/* The dry run adds value - value: 0 where finite, NaN where not, a sum that cannot overflow on large finite
+   values (it has no values to look at afterwards, as the step has). */
+#define MOTUS__CHECK_ADD(sum, value) ((flags & MOTUS__K_DRY) ? (sum) + ((value) - (value)) : (sum) + (value))
 MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus__kernel_lanes *k,
                                       const int dims, const int flags, motus__lane *check) {
     const int n = MOTUS__LANES;
@@ -1521,7 +1597,7 @@ MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus
     if (flags & MOTUS__K_MASS) { /* immovable particles: no acceleration (a NaN passes on) */
         motus__lane movable = motus__select(inverse_mass != zero, motus__splat(1), zero);
         MOTUS__EACH_DIM(a[d] = a[d] * movable;);
-        MOTUS__EACH_DIM(check[d] = check[d] + inverse_mass;); /* a NaN mass shows even without forces */
+        MOTUS__EACH_DIM(check[d] = MOTUS__CHECK_ADD(check[d], inverse_mass);); /* a NaN mass shows even without forces */
     } else if (flags & MOTUS__K_GENERAL) { /* a uniform inverse mass of 0 comes here: nothing accelerates */
         MOTUS__EACH_DIM(a[d] = a[d] * k->uniform_movable;);
     }
@@ -1532,11 +1608,14 @@ MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus
             x[d] = x[d] + motus__select(k->semi_implicit, v[d], old_velocity) * h;
         else
             x[d] = x[d] + v[d] * h;
-        if (flags & MOTUS__K_DAMPING) v[d] = v[d] * k->damping;
+        if (flags & MOTUS__K_DAMPING) { /* as motus__damp: slow components to a zero of their sign */
+            v[d] = v[d] * k->damping;
+            v[d] = motus__select((v[d] < k->rest_speed) & (v[d] > -k->rest_speed), v[d] * zero, v[d]);
+        }
         /* Checked before the bounds, whose clamp would turn an infinite position into the wall; explicit
            Euler's new velocity does not reach its position, so the general kernel adds it too. */
-        check[d] = check[d] + x[d];
-        if (flags & MOTUS__K_GENERAL) check[d] = check[d] + v[d];
+        check[d] = MOTUS__CHECK_ADD(check[d], x[d]);
+        if (flags & MOTUS__K_GENERAL) check[d] = MOTUS__CHECK_ADD(check[d], v[d]);
         if (flags & MOTUS__K_BOUNDS) { /* as motus_particle_bounce: mirror, bounce, then clamp */
             motus__mask below = x[d] < k->bounds_min[d], above, finite;
             x[d] = motus__select(below, k->bounds_min[d] + (k->bounds_min[d] - x[d]), x[d]);
@@ -1549,10 +1628,12 @@ MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus
             x[d] = motus__select((x[d] < k->bounds_min[d]) & finite, k->bounds_min[d], x[d]);
             x[d] = motus__select((x[d] > k->bounds_max[d]) & finite, k->bounds_max[d], x[d]);
         }
-        motus__store(b->position[d] + i, x[d], n);
-        /* A kernel with nothing that changes velocities (drift, or masses with no force) does not store
-           them: a third less memory traffic. The stepper's v + 0 would turn a -0 into +0; that is all. */
-        if (flags & MOTUS__K_CHANGES_VELOCITY) motus__store(b->velocity[d] + i, v[d], n);
+        if (!(flags & MOTUS__K_DRY)) {
+            motus__store(b->position[d] + i, x[d], n);
+            /* A kernel with nothing that changes velocities (drift, or masses with no force) does not store
+               them: a third less memory traffic. The stepper's v + 0 would turn a -0 into +0; that is all. */
+            if (flags & MOTUS__K_CHANGES_VELOCITY) motus__store(b->velocity[d] + i, v[d], n);
+        }
     );
 }
 
@@ -1591,6 +1672,7 @@ MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int co
     k.linear_drag = motus__splat(c->linear_drag);
     k.quadratic_drag = motus__splat(c->quadratic_drag);
     k.damping = motus__splat(c->damping);
+    k.rest_speed = motus__splat(c->rest_speed);
     k.inverse_mass = motus__splat(c->inverse_mass);
     k.attractor_strength = motus__splat(c->attractor_strength);
     k.bounce = motus__splat(-c->restitution);
@@ -1630,7 +1712,8 @@ MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int co
         if (part_length[part] == 0) continue;
         motus__partial_copy(&arrays, part_start[part], &partial, part_length[part], dims, flags, 1);
         motus__batch_lanes(&partial, 0, &k, dims, flags, check);
-        motus__partial_copy(&arrays, part_start[part], &partial, part_length[part], dims, flags, 0);
+        if (!(flags & MOTUS__K_DRY))
+            motus__partial_copy(&arrays, part_start[part], &partial, part_length[part], dims, flags, 0);
     }
     check[0] = check[0] + check[1] + check[2];
 #if MOTUS__VECTOR
@@ -1672,6 +1755,25 @@ MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int co
 MOTUS__KERNEL_DISPATCH(motus__batch_dispatch2, 2)
 MOTUS__KERNEL_DISPATCH(motus__batch_dispatch3, 3)
 #undef MOTUS__KERNEL_DISPATCH
+#ifdef MOTUS_CHECKED
+/* The step without its stores, through the general kernel: it computes every term with neutral values for
+   what the scene lacks, so it gives the values any kernel gives. Nonzero if one would not be finite. Only
+   checked builds compile these 8 kernels. */
+MOTUS_API int motus__batch_dry_run(const motus_batch *b, int first, int count, const motus__kernel_constants *k,
+                                   int flags) {
+    const int dry = MOTUS__GENERAL | MOTUS__K_DRY;
+    switch ((flags & (MOTUS__K_MASS | MOTUS__K_FORCES)) + (b->dimensions == 3 ? 1 : 0)) {
+    case 0: return motus__batch_range(b, first, count, k, 2, dry);
+    case 1: return motus__batch_range(b, first, count, k, 3, dry);
+    case MOTUS__K_MASS: return motus__batch_range(b, first, count, k, 2, dry | MOTUS__K_MASS);
+    case MOTUS__K_MASS + 1: return motus__batch_range(b, first, count, k, 3, dry | MOTUS__K_MASS);
+    case MOTUS__K_FORCES: return motus__batch_range(b, first, count, k, 2, dry | MOTUS__K_FORCES);
+    case MOTUS__K_FORCES + 1: return motus__batch_range(b, first, count, k, 3, dry | MOTUS__K_FORCES);
+    case MOTUS__K_MASS + MOTUS__K_FORCES: return motus__batch_range(b, first, count, k, 2, dry | MOTUS__K_MASS | MOTUS__K_FORCES);
+    default: return motus__batch_range(b, first, count, k, 3, dry | MOTUS__K_MASS | MOTUS__K_FORCES);
+    }
+}
+#endif
 #undef MOTUS__KERNEL_CASES_8
 #undef MOTUS__KERNEL_CASE
 
@@ -1754,8 +1856,9 @@ MOTUS_API motus_result motus_batch_check(const motus_scene *scene, const motus_b
 
 /* Steps particles [first, first + count) of `batch` by dt through `scene` (see the top of this section).
    Thread-safe for ranges that do not overlap. Release builds: on MOTUS_ERROR_NOT_FINITE the range was
-   written (the data had NaN/Inf, or overflowed); with MOTUS_CHECKED, bad data is found first and nothing is
-   written. Every other error is found before anything is written. */
+   written (the data had NaN/Inf, or overflowed); with MOTUS_CHECKED, bad data (MOTUS_ERROR_NOT_FINITE) and
+   overflow (MOTUS_ERROR_OVERFLOW) are found first and nothing is written. Every other error is found before
+   anything is written. */
 MOTUS_API motus_result motus_batch_step(const motus_scene *scene, const motus_batch *batch, int first, int count,
                                         motus_real dt) {
     motus__kernel_constants k;
@@ -1775,6 +1878,7 @@ MOTUS_API motus_result motus_batch_step(const motus_scene *scene, const motus_ba
     k.h = dt;
     k.linear_drag = k.quadratic_drag = k.attractor_strength = k.restitution = 0;
     k.damping = 1;
+    k.rest_speed = 0; /* no flush without damping (the general kernel always "damps", by 1) */
     k.semi_implicit = scene->method == MOTUS_SEMI_IMPLICIT_EULER;
     k.has_gravity = k.has_linear_drag = 0;
     k.inverse_mass = (has & MOTUS_HAS_PARTICLE_MASS) ? 0 : scene->inverse_mass;
@@ -1800,6 +1904,7 @@ MOTUS_API motus_result motus_batch_step(const motus_scene *scene, const motus_ba
     }
     if (has & MOTUS_HAS_DAMPING_PER_STEP) k.damping = scene->damping;
     if (has & MOTUS_HAS_DAMPING_PER_SECOND) k.damping = MOTUS_POW(scene->damping, dt); /* as damp_per_second */
+    if (motus__scene_damping_flags(has)) k.rest_speed = (motus_real)(MOTUS_REST_SPEED);
     if (has & MOTUS_HAS_BOUNDS) {
         for (d = 0; d < batch->dimensions; ++d) {
             k.bounds_min[d] = scene->bounds_min[d];
@@ -1818,6 +1923,11 @@ MOTUS_API motus_result motus_batch_step(const motus_scene *scene, const motus_ba
         (!(has & MOTUS_HAS_PARTICLE_MASS) && scene->inverse_mass == 0))
         flags = (flags & (MOTUS__K_MASS | MOTUS__K_FORCES)) | MOTUS__GENERAL; /* gravity, drag: by mask */
 
+#ifdef MOTUS_CHECKED
+    /* The range was checked finite above: a non-finite result can only be an overflow. Find it before
+       writing anything. */
+    if (motus__batch_dry_run(batch, first, count, &k, flags)) return MOTUS_ERROR_OVERFLOW;
+#endif
     broken = batch->dimensions == 2 ? motus__batch_dispatch2(batch, first, count, &k, flags)
                                     : motus__batch_dispatch3(batch, first, count, &k, flags);
     if (broken < 0) return MOTUS_ERROR_UNSUPPORTED; /* cannot happen: every flag combination has a kernel */
@@ -1953,6 +2063,134 @@ MOTUS_API motus_result motus_batch_add_spring_forces(const motus_batch *batch, i
 }
 
 /* =================================================================================================
+   Fixed-step clock: the game loop's accumulator
+   =================================================================================================
+   Frames take whatever time they take; the simulation should not (see DAMPING at the top). The clock turns
+   each frame's duration into a whole number of steps of one fixed dt and carries the rest over to the next
+   frame (G. Fiedler, "Fix your timestep", 2004):
+
+       motus_clock clock;
+       motus_clock_init(&clock, MOTUS_R(1.0) / 60, 0);        // dt 1/60 s, at most 8 steps a frame
+       // every frame:
+       int steps, i;
+       motus_clock_advance(&clock, frame_seconds, &steps);
+       for (i = 0; i < steps; ++i) { previous = p.position; ...forces...; motus_particle_step(&p, clock.fixed_dt); }
+       draw(motus_vec2_lerp(previous, p.position, motus_clock_alpha(&clock)));
+
+   The same inputs stepped through the clock give the same states at any frame rate: only the number of
+   steps per frame changes, never their dt. Drawing the state interpolated by alpha between the last two
+   steps hides the beat between frame rate and step rate, at the cost of showing the past by < 1 step.
+
+   Spiral of death: a long frame (a 2 s hitch: loading, a breakpoint, a dragged window) asks for many
+   steps, which make the next frame long too. The clock runs at most max_steps_per_frame steps and drops
+   the whole steps beyond that (the fraction of a step left over is kept, so alpha stays smooth): the game
+   slows down instead of launching everything. The fields steps_dropped_* and time_dropped_* report it.
+
+   The accumulator counts integer ticks, 2^32 to a step, rather than seconds in a motus_real: a frame of
+   exactly dt (or k*dt) is exactly 2^32 (k*2^32) ticks, so a 60 Hz game with dt 1/60 takes exactly one step
+   every frame for ever, with no comparison of two nearly equal reals; adding and subtracting ticks is
+   exact, so the leftover never drifts over a long run (a float accumulator of seconds rounds at every
+   frame, and a double one still decides "one step or none" by comparing two sums that differ by rounding);
+   the float and double builds count the same. Each frame is rounded once to the nearest tick, computed in
+   double: 2^-33 of a step at most. alpha = leftover / 2^32 is in [0, 1) by construction. */
+
+/* Steps a frame may run when motus_clock_init is given 0: 8 steps of 1/60 s cover frames up to 133 ms
+   (7.5 frames a second) before time is dropped. */
+#ifndef MOTUS_CLOCK_DEFAULT_MAX_STEPS
+#define MOTUS_CLOCK_DEFAULT_MAX_STEPS 8
+#endif
+#define MOTUS__CLOCK_TICKS_PER_STEP 4294967296.0 /* 2^32 */
+#define MOTUS__CLOCK_TICK_MASK 0xFFFFFFFFu
+
+typedef struct motus_clock {
+    motus_real fixed_dt;                 /* s, the dt of every step */
+    int max_steps_per_frame;             /* the cap against the spiral of death */
+    uint64_t accumulator;                /* ticks not stepped yet: < 2^32 (one step) between frames */
+    uint64_t steps_total;                /* steps run since init: simulated time = steps_total * fixed_dt */
+    uint64_t steps_dropped_last_frame;   /* whole steps the cap dropped in the last advance */
+    uint64_t steps_dropped_total;        /* since init */
+    motus_real time_dropped_last_frame;  /* s, dropped in the last advance */
+    double time_dropped_total;           /* s, since init; a double so that a float build's sum holds */
+} motus_clock;
+
+/* fixed_dt must be finite and > 0; max_steps_per_frame >= 0, where 0 means MOTUS_CLOCK_DEFAULT_MAX_STEPS. */
+MOTUS_API motus_result motus_clock_init(motus_clock *clock, motus_real fixed_dt, int max_steps_per_frame) {
+    if (!clock) return MOTUS_ERROR_NULL_POINTER;
+    if (!motus__is_positive_finite(fixed_dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    if (max_steps_per_frame < 0) return MOTUS_ERROR_INVALID_COUNT;
+    clock->fixed_dt = fixed_dt;
+    clock->max_steps_per_frame = max_steps_per_frame ? max_steps_per_frame : MOTUS_CLOCK_DEFAULT_MAX_STEPS;
+    clock->accumulator = 0;
+    clock->steps_total = 0;
+    clock->steps_dropped_last_frame = 0;
+    clock->steps_dropped_total = 0;
+    clock->time_dropped_last_frame = 0;
+    clock->time_dropped_total = 0;
+    return MOTUS_OK;
+}
+
+/* Adds a frame that lasted frame_seconds (finite and >= 0; 0 runs no step) and sets *steps_to_run to the
+   fixed steps to run now, at most max_steps_per_frame. A negative, NaN or infinite frame time returns
+   MOTUS_ERROR_INVALID_FRAME_TIME with the clock left as it was and *steps_to_run 0, so that a loop which
+   ignores the result runs nothing. A clock that motus_clock_init did not make is MOTUS_ERROR_INVALID_COUNT. */
+MOTUS_API motus_result motus_clock_advance(motus_clock *clock, motus_real frame_seconds, int *steps_to_run) {
+    double frame_steps, dt;
+    uint64_t ticks, steps, cap, dropped = 0;
+    motus_real time_dropped = 0;
+    if (!clock || !steps_to_run) return MOTUS_ERROR_NULL_POINTER;
+    *steps_to_run = 0;
+    if (!motus_real_is_finite(frame_seconds) || frame_seconds < 0) return MOTUS_ERROR_INVALID_FRAME_TIME;
+    if (!motus__is_positive_finite(clock->fixed_dt) || clock->max_steps_per_frame <= 0 ||
+        clock->accumulator > MOTUS__CLOCK_TICK_MASK)
+        return MOTUS_ERROR_INVALID_COUNT;
+    dt = (double)clock->fixed_dt;
+    cap = (uint64_t)clock->max_steps_per_frame;
+    frame_steps = (double)frame_seconds / dt;
+    if (frame_steps < 2147483648.0) { /* < 2^31 steps: the ticks fit in 64 bits, counted exactly */
+        ticks = clock->accumulator + (uint64_t)(frame_steps * MOTUS__CLOCK_TICKS_PER_STEP + 0.5);
+        steps = ticks >> 32;
+        clock->accumulator = ticks & MOTUS__CLOCK_TICK_MASK;
+        if (steps > cap) {
+            dropped = steps - cap;
+            time_dropped = (motus_real)((double)dropped * dt);
+            steps = cap;
+        }
+    } else { /* a frame of 2^31 steps or more (cap <= INT_MAX < 2^31): a fraction of a step is noise */
+        steps = cap;
+        dropped = frame_steps < 1.8e19 ? (uint64_t)frame_steps - cap : ~(uint64_t)0;
+        time_dropped = (motus_real)((double)frame_seconds - (double)cap * dt);
+    }
+    clock->steps_dropped_last_frame = dropped;
+    clock->steps_dropped_total += dropped;
+    clock->time_dropped_last_frame = time_dropped;
+    clock->time_dropped_total += (double)time_dropped;
+    clock->steps_total += steps;
+    *steps_to_run = (int)steps;
+    return MOTUS_OK;
+}
+
+/* How far the clock is between the last step run and the next one, in [0, 1): the weight of the newest
+   state when drawing, position = lerp(before the last step, after it, alpha). 0 for a NULL clock. */
+MOTUS_API motus_real motus_clock_alpha(const motus_clock *clock) {
+    motus_real alpha;
+    if (!clock || clock->accumulator > MOTUS__CLOCK_TICK_MASK) return 0;
+    alpha = (motus_real)((double)clock->accumulator / MOTUS__CLOCK_TICKS_PER_STEP);
+    /* In float a leftover within 2^-25 of a step rounds up to 1: keep alpha below 1 as promised. */
+    return alpha < 1 ? alpha : 1 - MOTUS_REAL_EPSILON / 2;
+}
+
+/* Simulated seconds since init: steps_total * fixed_dt, in double (exact up to 2^53 steps' rounding). */
+MOTUS_API double motus_clock_time(const motus_clock *clock) {
+    if (!clock) return 0;
+    return (double)clock->steps_total * (double)clock->fixed_dt;
+}
+
+/* a + (b - a)*t: t = 0 gives a exactly; for drawing a state between two steps with t = motus_clock_alpha. */
+MOTUS_API motus_vec2 motus_vec2_lerp(motus_vec2 a, motus_vec2 b, motus_real t) {
+    return motus_vec2_add(a, motus_vec2_scale(motus_vec2_sub(b, a), t));
+}
+
+/* =================================================================================================
    Validation and messages
    =================================================================================================
    BAD INPUT: WHAT EACH BUILD CHECKS
@@ -2032,6 +2270,7 @@ MOTUS_API const char *motus_result_string(motus_result result) {
     case MOTUS_ERROR_INVALID_DESC:
         return "stepper desc invalid: flags may only have MOTUS_STEPPER_* bits, scratch must be aligned for "
                "motus_real";
+    case MOTUS_ERROR_INVALID_FRAME_TIME: return "frame time must be finite and >= 0 seconds; the clock was left as it was";
     case MOTUS_RESULT_COUNT: break;
     }
     return "unknown motus_result value";
