@@ -62,6 +62,18 @@
                                             whose magnitude falls below this to zero (see SUBNORMALS). 0
                                             turns the flush off.
    - MOTUS_CLOCK_DEFAULT_MAX_STEPS (8)      steps a motus_clock runs per frame when given 0.
+   - MOTUS_ALLOW_FP_CONTRACT (undefined)    leave floating-point contraction to the compiler's flags. By
+                                            default motus turns it off for its own code (see DETERMINISM):
+                                            Clang: `#pragma STDC FP_CONTRACT OFF` between a float_control
+                                            push and pop, free, your code keeps its own setting; GCC (which
+                                            ignores the STDC pragma) in GNU modes on a target with FMA:
+                                            `#pragma GCC optimize("fp-contract=off")` between push_options
+                                            and pop_options. GCC then does not inline motus's functions into
+                                            code built with other options, which costs a call per function;
+                                            build with -ffp-contract=off to keep both the inlining and the
+                                            determinism, or define this to keep the inlining and the FMAs.
+   - MOTUS_ALLOW_FAST_MATH (undefined)      silence the message printed when motus is built with -ffast-math
+                                            (or -ffinite-math-only): see DETERMINISM for what it breaks.
 
    DAMPING: PER STEP OR PER SECOND
    ===============================
@@ -75,7 +87,7 @@
    step (F held constant), so the position too is the same at 30, 60 or 144 steps a second, up to rounding.
 
    SUBNORMALS
-   ==========
+   ===
    Damping multiplies a velocity by a factor < 1 every step, so a particle left alone slows down
    geometrically: with 0.99 a step, 1 m/s goes below FLT_MIN (1.2e-38) after some 8,700 steps and then
    never leaves the subnormal numbers: below 50 times the smallest one, 0.99*v rounds back to v.
@@ -85,6 +97,42 @@
    sign): 1e-30 m/s in float, a round number above FLT_MIN/1e-7 = 1.2e-31 so that v*dt stays a normal
    float for any dt >= 1e-7 s, and far below anything a game can see (1e-300 in double). bench/subnormal
    measures the cost with and without the flush.
+
+   DETERMINISM
+   ===========
+   The same scene, stepped the same way, ends in the same state bit for bit whatever builds it: GCC or
+   Clang, -O0 to -O3, with -march=native or without, as C or C++, with any MOTUS_SIMD_BYTES or
+   MOTUS_NO_SIMD; and the three ways to step agree with each other on a scene they can all run (the batch
+   kernels with motus_stepper_step followed by motus_particle_damp_per_step and motus_particle_bounce, and
+   motus_particle_step where the forces are all accumulated ones). tests/determinism.c checks this with
+   golden hashes of a 1000-particle scene, per method and per precision: 10^5 steps in the test build,
+   10^4 (500 at -O0) in each build of the gcc/clang x -O0/-O2/-O3/-O3 -march=native x C/C++ matrix.
+   This holds given:
+   - IEEE-754 arithmetic on motus_real with no excess precision (FLT_EVAL_METHOD 0: SSE2 on x86, any
+     arm64; not the x87 unit of 32-bit x86 builds without -msse2 -mfpmath=sse);
+   - no contraction of a*b + c into one fused multiply-add, which rounds once instead of twice. GCC in
+     its GNU modes (its default: no -std=c99/c11/c++NN) and Clang contract by default when the target has
+     FMA (-march=native on any recent x86; always on arm64). motus turns contraction off for its own code
+     (see MOTUS_ALLOW_FP_CONTRACT), except where a flag overrides the pragmas: -ffp-contract=fast given
+     to Clang, or to GCC in an ISO mode (-std=c99 ... -ffp-contract=fast). -ffp-contract=off is the
+     reliable, zero-cost way: it is what the tests build with. Other compilers: check their default
+     (MSVC contracts under /fp:fast and, before Visual Studio 2022, sometimes under /fp:precise);
+   - no -ffast-math, nor any of its parts (-ffinite-math-only, -fassociative-math, -freciprocal-math):
+     they let the compiler reorder sums, replace divisions, and assume that NaN never happens, which
+     removes motus's checks of a bad argument (`!(mass > 0)`), and linking with it flushes subnormals to
+     zero for the whole program. motus prints a message when __FAST_MATH__ or __FINITE_MATH_ONLY__ is
+     set (MOTUS_ALLOW_FAST_MATH silences it);
+   - the same libm, for the few functions that call it. sqrt is exact (correctly rounded) everywhere, so
+     springs with a rest length, quadratic drag and the attractor are deterministic. exp, expm1 and pow
+     are not correctly rounded in every libm, so results that go through them may differ between glibc,
+     musl, macOS and MSVC (and from a compiler that folds a call with constant arguments at build time):
+     motus_particle_damp_per_second and motus_damping_per_second_from_per_step (pow), the batch kernels'
+     MOTUS_HAS_DAMPING_PER_SECOND (pow, once per call), motus_particle_step_linear_drag and the stepper's
+     MOTUS_EXACT_LINEAR_DRAG (exp; expm1 too when drag*dt >= 0.5). Every other method and function uses
+     only + - * / and sqrt;
+   - subnormals not flushed to zero (no -ffast-math, no FTZ/DAZ bits set by other code);
+   - your own code (force callbacks, the forces you add) deterministic too: motus's pragmas cover only
+     the header.
 */
 #ifndef MOTUS_H
 #define MOTUS_H
@@ -107,6 +155,35 @@
 /* =================================================================================================
    Configuration
    ================================================================================================= */
+/* Floating-point contraction off for the code of this header, restored at its end (see DETERMINISM and
+   MOTUS_ALLOW_FP_CONTRACT). A fused a*b + c rounds once where the source rounds twice, so a build that
+   contracts ends a long run in another state. Clang marks each operation, so what is inlined into your
+   code keeps its setting (float_control push/pop since Clang 11). GCC ignores the STDC pragma; its
+   optimize pragma works per function, and it contracts only in GNU modes (-ffp-contract=fast is their
+   default; ISO modes mean off) and only with an FMA instruction (__FP_FAST_FMA), so it is used only then. */
+#ifndef MOTUS_ALLOW_FP_CONTRACT
+#if defined(__clang__) && ((defined(__apple_build_version__) && __clang_major__ >= 13) ||                  \
+                           (!defined(__apple_build_version__) && __clang_major__ >= 11))
+#define MOTUS__FP_CONTRACT_PRAGMA_CLANG
+#pragma float_control(push)
+#pragma STDC FP_CONTRACT OFF
+#elif defined(__GNUC__) && !defined(__clang__) && !defined(__INTEL_COMPILER) && !defined(__STRICT_ANSI__) &&  \
+    (defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF))
+#define MOTUS__FP_CONTRACT_PRAGMA_GCC
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+#endif
+#endif
+
+/* -ffast-math lets the compiler assume that no value is NaN or infinite (which removes the checks that
+   reject a NaN argument), reorder sums and replace divisions (which changes results between builds), and
+   flushes subnormals to zero for the whole program. A message, not #warning: #warning is an extension
+   before C23, and -Wpedantic -Werror turns it into an error. */
+#if (defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__)) &&                   \
+    !defined(MOTUS_ALLOW_FAST_MATH)
+#pragma message("motus.h: built with -ffast-math (or -ffinite-math-only): its NaN checks may be optimised away and results differ between builds; see DETERMINISM in motus.h, or define MOTUS_ALLOW_FAST_MATH")
+#endif
+
 #ifndef MOTUS_API
 #define MOTUS_API static inline
 #endif
@@ -2377,6 +2454,13 @@ MOTUS_API motus_result motus_batch_check_report(const motus_scene *scene, const 
 
 #ifdef __cplusplus
 } /* extern "C" */
+#endif
+
+/* The contraction setting of the code that includes this header, back as it was (see Configuration). */
+#if defined(MOTUS__FP_CONTRACT_PRAGMA_CLANG)
+#pragma float_control(pop)
+#elif defined(MOTUS__FP_CONTRACT_PRAGMA_GCC)
+#pragma GCC pop_options
 #endif
 
 #endif /* MOTUS_H */
