@@ -1103,7 +1103,7 @@ MOTUS_API motus_result motus__diagnose(const motus_particle *particles, int coun
 MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle *particles, int count,
                                           const motus_forces *forces, motus_real dt) {
     static const motus_forces no_forces = {{0, 0}, 0, 0, 0, {0, 0}, NULL, 0, NULL, NULL};
-    motus_vec2 *x, *v, *a;
+    motus_vec2 *x, *v, *a, no_scratch[1];
     const motus_real h = dt, t = stepper ? stepper->time : 0;
     motus_result result;
     int i, reuse, bad = 0, checked = 0, suspicious = 0;
@@ -1111,6 +1111,8 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
     if (!stepper->scratch && stepper->capacity > 0) return MOTUS_ERROR_NULL_POINTER; /* filled by hand */
     if (count < 0 || count > stepper->capacity) return MOTUS_ERROR_INVALID_COUNT;
     if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    /* The clock the callback sees must stay finite too (two steps of dt near the maximum overflow it). */
+    if (!motus_real_is_finite(stepper->time + dt)) return MOTUS_ERROR_OVERFLOW;
     if (!forces) forces = &no_forces;
     /* The force model is checked up front (its springs index the arrays). The particles are not: a NaN or
        Inf in one, or a negative mass, makes the new state non-finite or trips `bad` below, and only then
@@ -1119,7 +1121,9 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
     result = motus_forces_check(forces, count);
     if (result != MOTUS_OK) return result;
 
-    x = stepper->scratch;
+    /* A stepper of capacity 0 may have no scratch, and NULL + 0 is undefined behaviour in C (C11 6.5.6;
+       UBSan reports it): offsets from a local array instead. count is 0 then, so nothing reads it. */
+    x = stepper->scratch ? stepper->scratch : no_scratch;
     v = x + stepper->capacity;
     a = v + stepper->capacity;
     reuse = (stepper->flags & MOTUS_STEPPER_REUSE_FORCES) && stepper->kept_acceleration_count == count;
@@ -1174,28 +1178,33 @@ MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle
     }
     case MOTUS_VELOCITY_VERLET:
     case MOTUS_LEAPFROG: {
-        motus_vec2 *kept = a + stepper->capacity; /* a(x_n, v_n) from the last step, or computed now */
+        motus_vec2 *kept = a + stepper->capacity; /* a(x_n, v_n) from the last step (REUSE_FORCES) */
         motus_vec2 *predicted = kept + stepper->capacity; /* v_n + a_n*h, the velocity the end forces see */
+        /* a_n: the kept one, or evaluated now into `a`, never into `kept`: a step that fails must leave the
+           kept accelerations as they were (the next step may reuse them). */
+        motus_vec2 *start = reuse ? kept : a;
         motus__gather(particles, count, x, v);
-        if (!reuse) motus__accelerations(forces, particles, count, x, v, t, kept);
+        if (!reuse) motus__accelerations(forces, particles, count, x, v, t, a);
         else /* the forces given are not evaluated this time: see that they were fine */
             for (i = 0; i < count; ++i) bad |= motus__vec2_not_finite(particles[i].force);
         if (stepper->method == MOTUS_VELOCITY_VERLET) {
             for (i = 0; i < count; ++i) {
                 x[i] = motus_vec2_add(x[i], motus_vec2_add(motus_vec2_scale(v[i], h),
-                                                           motus_vec2_scale(kept[i], MOTUS_R(0.5) * h * h)));
-                predicted[i] = motus_vec2_add(v[i], motus_vec2_scale(kept[i], h));
+                                                           motus_vec2_scale(start[i], MOTUS_R(0.5) * h * h)));
+                predicted[i] = motus_vec2_add(v[i], motus_vec2_scale(start[i], h));
+                /* v_n stays in the particle (v is its copy), so v can hold a_n while `a` takes a_{n+1} */
+                v[i] = start[i];
             }
             motus__accelerations(forces, particles, count, x, predicted, t + h, a);
             for (i = 0; i < count; ++i) {
-                v[i] = motus_vec2_add(v[i], motus_vec2_scale(motus_vec2_add(kept[i], a[i]), MOTUS_R(0.5) * h));
+                v[i] = motus_vec2_add(particles[i].velocity, motus_vec2_scale(motus_vec2_add(v[i], a[i]), MOTUS_R(0.5) * h));
             }
         } else {
             for (i = 0; i < count; ++i) {
-                motus_vec2 half = motus_vec2_add(v[i], motus_vec2_scale(kept[i], MOTUS_R(0.5) * h));
+                motus_vec2 half = motus_vec2_add(v[i], motus_vec2_scale(start[i], MOTUS_R(0.5) * h));
                 x[i] = motus_vec2_add(x[i], motus_vec2_scale(half, h));
                 v[i] = half;
-                predicted[i] = motus_vec2_add(half, motus_vec2_scale(kept[i], MOTUS_R(0.5) * h));
+                predicted[i] = motus_vec2_add(half, motus_vec2_scale(start[i], MOTUS_R(0.5) * h));
             }
             motus__accelerations(forces, particles, count, x, predicted, t + h, a);
             for (i = 0; i < count; ++i) {
@@ -1694,14 +1703,17 @@ MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus
         check[d] = MOTUS__CHECK_ADD(check[d], x[d]);
         if (flags & MOTUS__K_GENERAL) check[d] = MOTUS__CHECK_ADD(check[d], v[d]);
         if (flags & MOTUS__K_BOUNDS) { /* as motus_particle_bounce: mirror, bounce, then clamp */
-            motus__mask below = x[d] < k->bounds_min[d], above, finite;
+            motus__mask below = x[d] < k->bounds_min[d], above;
+            /* Clamped only where the step left it finite: an infinite position must stay infinite for the
+               check, but one the mirror itself overflows (walls near the maximum) is clamped, as
+               motus_particle_bounce does. */
+            const motus__mask finite = (motus__mask)(x[d] >= motus__splat(-MOTUS__REAL_MAX)) &
+                                       (motus__mask)(x[d] <= motus__splat(MOTUS__REAL_MAX));
             x[d] = motus__select(below, k->bounds_min[d] + (k->bounds_min[d] - x[d]), x[d]);
             v[d] = motus__select(below, v[d] * k->bounce, v[d]);
             above = x[d] > k->bounds_max[d];
             x[d] = motus__select(above, k->bounds_max[d] - (x[d] - k->bounds_max[d]), x[d]);
             v[d] = motus__select(above, v[d] * k->bounce, v[d]);
-            /* Clamped only where finite: an infinite position must stay infinite for the check below. */
-            finite = (x[d] >= motus__splat(-MOTUS__REAL_MAX)) & (x[d] <= motus__splat(MOTUS__REAL_MAX));
             x[d] = motus__select((x[d] < k->bounds_min[d]) & finite, k->bounds_min[d], x[d]);
             x[d] = motus__select((x[d] > k->bounds_max[d]) & finite, k->bounds_max[d], x[d]);
         }
