@@ -148,9 +148,7 @@
 #include <limits.h> /* INT_MAX */
 #include <stddef.h> /* size_t, NULL */
 #include <stdint.h> /* fixed-width integers for the bit-level finite check; no library code */
-#ifdef __cplusplus
-#include <string.h> /* memcpy, for the same check in C++ */
-#endif
+#include <string.h> /* memcpy (the bit-level check in C++), memset (motus_stepper_init) */
 
 /* =================================================================================================
    Configuration
@@ -992,6 +990,8 @@ MOTUS_API motus_result motus_stepper_init(motus_stepper *stepper, const motus_st
     if ((desc->flags & ~(unsigned)MOTUS_STEPPER_REUSE_FORCES) ||
         (uintptr_t)desc->scratch % offsetof(motus__align_probe, r) != 0)
         return MOTUS_ERROR_INVALID_DESC;
+    /* Padding too: a stepper saved, hashed or compared byte for byte (replays) holds no stale bytes. */
+    memset(stepper, 0, sizeof *stepper);
     stepper->method = desc->method;
     stepper->capacity = desc->capacity;
     stepper->flags = desc->flags;
