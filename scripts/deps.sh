@@ -7,7 +7,9 @@ set -euo pipefail
 demo=(cmake make gcc pkg-config python3 libx11-dev libgl1-mesa-dri libglx-mesa0 xvfb xauth
       libxrandr2 libxcursor1 libxi6 libxinerama1 libxext6 libxrender1 libx11-xcb1)
 # The tests also build the benchmarks (to keep them compiling) and run them once in their quick mode.
-test=("${demo[@]}" g++ clang tcc libosmesa6-dev libstb-dev xdotool libboost-dev libgsl-dev gnuplot-nox)
+# scripts/check-tools.sh (run by scripts/test.sh): valgrind, and clang's sanitizer and libFuzzer runtimes.
+test=("${demo[@]}" g++ clang tcc libosmesa6-dev libstb-dev xdotool libboost-dev libgsl-dev gnuplot-nox
+      valgrind libclang-rt-14-dev)
 bench=(cmake make gcc g++ pkg-config libboost-dev libgsl-dev gnuplot-nox)
 
 case "${1:-test}" in

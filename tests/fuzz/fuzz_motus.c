@@ -4,16 +4,17 @@
    What it asserts, beyond "no crash, no sanitizer report" (ASan + UBSan in every build of it):
    - a call that returns an error leaves its state byte for byte as it was: the particle; the particles,
      the stepper and what the stepper remembers in its scratch (position Verlet's last displacements, the
-     kept accelerations of MOTUS_STEPPER_REUSE_FORCES); the batch arrays. The one documented exception:
+     kept accelerations of MOTUS_STEPPER_REUSE_FORCES); the batch arrays. The documented exceptions:
      motus_batch_step returning MOTUS_ERROR_NOT_FINITE may have written its range (release builds; with
-     MOTUS_CHECKED only when motus_batch_check found the range clean, i.e. the step itself overflowed);
+     MOTUS_CHECKED only when motus_batch_check found the range clean, i.e. the step itself overflowed), and
+     motus_batch_add_spring_forces returning it may have written forces (release builds only);
    - a call that returns MOTUS_OK on valid input leaves valid state: every field finite, inverse mass >= 0
      (the stepper's clock too); a step that returns MOTUS_OK has finite positions and velocities whatever
      it was given;
    - nothing outside what a call was given is written: particles past `count`, batch elements outside
      [first, first + count). Arrays are malloc'd to their exact size, so ASan sees any access past them.
 
-   Built three ways (tests/CMakeLists.txt builds the replay; the fuzzer is built by hand for now):
+   Built three ways (tests/CMakeLists.txt builds the replay; scripts/check-tools.sh fuzz builds the fuzzer):
    - clang -fsanitize=fuzzer,address,undefined: the fuzzer, run for a bounded time on tests/fuzz/corpus/;
    - with FUZZ_MOTUS_REPLAY: a main() that runs the files named on its command line once each, so that the
      corpus is a regression test in every build (gcc, ASan, valgrind) without libFuzzer;
@@ -521,6 +522,19 @@ static void batch_operations(reader *r) {
             result = motus_batch_add_spring_forces(&batch, springs_count_arg, byte(r) % 16 ? springs : NULL,
                                                    spring_count);
             check_string(result);
+#ifndef MOTUS_CHECKED
+            if (result == MOTUS_ERROR_NOT_FINITE) {
+                /* Documented for release builds: the data is read once, so a NaN or Inf among the spring ends
+                   (or a sum that overflows) is reported after the forces were added; only forces change. */
+                for (i = 0; i < n; ++i)
+                    for (k = 0; k < 6; ++k)
+                        REQUIRE(memcmp(&before.arrays[k][i], &data.arrays[k][i], sizeof(motus_real)) == 0,
+                                "motus_batch_add_spring_forces (NOT_FINITE) wrote a position or velocity");
+                for (i = 0; i < n; ++i)
+                    REQUIRE(memcmp(&before.arrays[9][i], &data.arrays[9][i], sizeof(motus_real)) == 0,
+                            "motus_batch_add_spring_forces (NOT_FINITE) wrote an inverse mass");
+            } else
+#endif
             if (result != MOTUS_OK) {
                 for (i = 0; i < n; ++i) REQUIRE(batch_same_at(&before, &data, i), "motus_batch_add_spring_forces");
             } else {

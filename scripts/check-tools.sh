@@ -1,0 +1,109 @@
+#!/usr/bin/env bash
+# Usage: scripts/check-tools.sh [asan] [valgrind] [fuzz]      (no argument: all three, in that order)
+# The test suite under the tools that find what tests miss. scripts/test.sh runs it after the normal suite.
+#   asan      configures build-asan/ with clang and MOTUS_SANITIZE=ON (AddressSanitizer + UndefinedBehavior-
+#             Sanitizer, any finding aborts), builds every test, example and benchmark and runs the ctest
+#             suite there. Leaks inside OSMesa (not motus, not raylib) are suppressed: tests/support/lsan.supp.
+#   valgrind  runs the suite of the normal tree (build/, built by scripts/test.sh; built here if missing)
+#             under valgrind memcheck through `ctest -T memcheck`: any error or definitely lost block fails
+#             the test.
+#   fuzz      builds tests/fuzz/fuzz_motus.c with clang -fsanitize=fuzzer,address,undefined (float, and double
+#             with MOTUS_CHECKED) and runs each for MOTUS_FUZZ_SECONDS (default 60) from tests/fuzz/corpus/.
+# What each pass leaves out, and why: the *_exclude patterns below (README.md, "Tests").
+# Environment: MOTUS_BUILD_DIR (build), MOTUS_ASAN_BUILD_DIR (build-asan), MOTUS_FUZZ_BUILD_DIR (build-fuzz),
+# MOTUS_FUZZ_SECONDS (60), MOTUS_JOBS (nproc).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+jobs=${MOTUS_JOBS:-$(nproc 2>/dev/null || echo 2)}
+build=${MOTUS_BUILD_DIR:-build}
+asan_build=${MOTUS_ASAN_BUILD_DIR:-build-asan}
+fuzz_build=${MOTUS_FUZZ_BUILD_DIR:-build-fuzz}
+fuzz_seconds=${MOTUS_FUZZ_SECONDS:-60}
+parts=("$@")
+[ ${#parts[@]} -gt 0 ] || parts=(asan valgrind fuzz)
+
+# Tests the ASan tree does not run (a regular expression for ctest -E): they build their own programs at
+# test time, without the sanitizers, to check compilers and flags, not memory:
+# - determinism.matrix.*, determinism.contracted.*: determinism.c rebuilt by gcc and clang in 18 modes; the
+#   sanitized determinism.{float,double}.* run the same source, golden hashes included.
+# - compile.{gcc,clang,g++,clang++,tcc}.*, compile.fast_math_message.*: the warning matrix and the
+#   -ffast-math message (the programs they run, the unit tests run sanitized).
+# - consumer.*: CMake consumer projects built against the installed package, which carries no sanitizer.
+asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|clang\+\+|tcc|fast_math_message)\.|consumer\.)'
+# Tests valgrind does not run (ctest -E), each for a reason:
+# - compile.batch.native.*, compile.batch.agree.*, compile.batch.clang.*, bench.throughput_quick_run: they run
+#   -march=native binaries, which on an AVX-512 machine use instructions valgrind cannot decode (SIGILL).
+#   The same kernels at 16 and 32 bytes (compile.batch.nosimd/simd32/avx2.*) run under valgrind, and the
+#   AVX-512 ones under ASan.
+# - determinism.*: 10^5 steps of 1000 particles per method (20 s of CPU per precision, hours under valgrind),
+#   and the matrix rebuilds them 18 times; the stepper and batch code they hash runs under valgrind in the
+#   stepper.*, batch*.* and numeric.* tests, and the golden-hash tests themselves run under ASan.
+# - consumer.*: the command is CMake (ctest --build-and-test); valgrind would check CMake, not motus.
+# - example.*: raylib programs in Xvfb with GLX on llvmpipe: under valgrind a frame takes longer than the key
+#   tests' timing allows, and what it reports is Mesa's; they run under ASan instead.
+# Script-driven tests (compile.gcc.* ...) run with --trace-children: valgrind follows the programs the script
+# starts from the build tree and skips system programs (compilers, shells' tools) by the skip patterns.
+valgrind_exclude='^(compile\.batch\.(native|agree|clang)\.|determinism\.|consumer\.|example\.|bench\.throughput_quick_run$)'
+valgrind_options="--error-exitcode=1 --trace-children=yes --trace-children-skip=/usr/*,/bin/*,/sbin/* --leak-check=full --show-leak-kinds=definite --errors-for-leak-kinds=definite \
+--track-origins=yes --num-callers=30 --suppressions=$root/tests/support/valgrind.supp"
+
+elapsed() { echo "check-tools: $1 took $(( $(date +%s) - $2 )) s"; }
+
+run_asan() {
+    local start
+    start=$(date +%s)
+    # clang: GCC 12 with UBSan takes minutes per unit that includes the batch kernels, clang seconds.
+    CC=${MOTUS_ASAN_CC:-clang} CXX=${MOTUS_ASAN_CXX:-clang++} \
+    cmake -S . -B "$asan_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMOTUS_SANITIZE=ON \
+          -DMOTUS_BUILD_TESTS=ON -DMOTUS_BUILD_EXAMPLES=ON
+    cmake --build "$asan_build" --parallel "$jobs"
+    (cd "$asan_build" && ctest --output-on-failure --parallel "$jobs" -E "$asan_exclude")
+    elapsed "asan (build + ctest)" "$start"
+}
+
+run_valgrind() {
+    local start
+    start=$(date +%s)
+    command -v valgrind >/dev/null 2>&1 || { echo "check-tools: valgrind is not installed (scripts/deps.sh test)" >&2; exit 1; }
+    if [ ! -f "$build/CTestTestfile.cmake" ]; then
+        cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMOTUS_BUILD_TESTS=ON -DMOTUS_BUILD_EXAMPLES=ON
+        cmake --build "$build" --parallel "$jobs"
+    fi
+    (cd "$build" && ctest -T memcheck --output-on-failure --parallel "$jobs" -E "$valgrind_exclude" \
+        --overwrite MemoryCheckCommand="$(command -v valgrind)" \
+        --overwrite MemoryCheckCommandOptions="$valgrind_options")
+    elapsed "valgrind (ctest -T memcheck)" "$start"
+}
+
+run_fuzz() {
+    local start variant flags binary work
+    start=$(date +%s)
+    command -v clang >/dev/null 2>&1 || { echo "check-tools: clang is not installed (scripts/deps.sh test)" >&2; exit 1; }
+    mkdir -p "$fuzz_build"
+    for variant in float double_checked; do
+        flags=()
+        [ "$variant" = double_checked ] && flags=(-DMOTUS_DOUBLE -DMOTUS_CHECKED)
+        binary="$fuzz_build/fuzz_motus_$variant"
+        echo "check-tools: clang -fsanitize=fuzzer,address,undefined ${flags[*]} tests/fuzz/fuzz_motus.c"
+        clang -std=c99 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer \
+              -ffp-contract=off -Wall -Wextra -Wpedantic -Werror "${flags[@]}" -Iinclude tests/fuzz/fuzz_motus.c \
+              -o "$binary" -lm
+        # New inputs go to a scratch directory, never into the committed corpus; a crash leaves its input in
+        # $fuzz_build/crash-* (replay it: $binary that-file).
+        work="$fuzz_build/corpus_$variant"
+        mkdir -p "$work"
+        "$binary" -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+                  -artifact_prefix="$fuzz_build/$variant-" "$work" tests/fuzz/corpus
+    done
+    elapsed "fuzz (2 builds, 2 x $fuzz_seconds s)" "$start"
+}
+
+for part in "${parts[@]}"; do
+    case "$part" in
+        asan) run_asan ;;
+        valgrind) run_valgrind ;;
+        fuzz) run_fuzz ;;
+        *) echo "usage: $0 [asan] [valgrind] [fuzz]" >&2; exit 2 ;;
+    esac
+done
