@@ -2094,16 +2094,80 @@ MOTUS_API motus_result motus__springs_check(const motus_spring *springs, int n, 
     return out_of_range ? MOTUS_ERROR_INVALID_FORCES : MOTUS_OK;
 }
 
+/* The force spring `s` puts on its first end (the second gets its opposite), from the batch's state. */
+MOTUS__INLINE motus_vec2 motus__batch_spring_force(const motus_batch *batch, const motus_spring *s) {
+    const int a = s->a, b = s->b, anchored = b < 0;
+    motus_vec2 xa = motus_v2(batch->position[0][a], batch->position[1][a]);
+    motus_vec2 va = motus_v2(batch->velocity[0][a], batch->velocity[1][a]);
+    motus_vec2 d = motus_vec2_sub(xa, anchored ? s->anchor : motus_v2(batch->position[0][b], batch->position[1][b]));
+    motus_vec2 relative = anchored ? va : motus_vec2_sub(va, motus_v2(batch->velocity[0][b], batch->velocity[1][b]));
+    return motus__spring_force(s, d, relative);
+}
+
+#ifdef MOTUS_CHECKED
+MOTUS__INLINE motus_real motus__abs(motus_real x) { return x < 0 ? -x : x; }
+
+/* Checked builds: would adding the springs' forces make a force not finite? Writes nothing. Each spring's
+   force and each force it adds to must be finite; then no running sum may overflow. A bound settles that
+   in one pass: B starts at the largest |force| the springs touch and adds |f| of every spring in order.
+   Rounding is monotonic, so each particle's running sum, summed in that order, never exceeds B in
+   magnitude: if B is finite, nothing overflows. Only when B is not (forces within a few springs' worth
+   of the largest real) is each touched particle's sum replayed exactly, in O(spring_count^2). */
+static motus_result motus__batch_springs_would_overflow(const motus_batch *batch, const motus_spring *springs,
+                                                        int spring_count) {
+    motus_real bound[2] = {0, 0};
+    int i, j, c, end;
+    for (i = 0; i < spring_count; ++i)
+        for (end = 0; end < 2; ++end) {
+            const int p = end ? springs[i].b : springs[i].a;
+            for (c = 0; c < 2 && p >= 0; ++c) {
+                const motus_real force = batch->force[c][p];
+                if (!motus_real_is_finite(force)) return MOTUS_ERROR_NOT_FINITE;
+                if (motus__abs(force) > bound[c]) bound[c] = motus__abs(force);
+            }
+        }
+    for (i = 0; i < spring_count; ++i) {
+        const motus_vec2 f = motus__batch_spring_force(batch, &springs[i]);
+        if (!motus_vec2_is_finite(f)) return MOTUS_ERROR_NOT_FINITE;
+        bound[0] += motus__abs(f.x);
+        bound[1] += motus__abs(f.y);
+    }
+    if (motus_real_is_finite(bound[0]) && motus_real_is_finite(bound[1])) return MOTUS_OK;
+    /* Exact: for each particle, at the first spring that touches it, replay its sum (springs have a != b). */
+    for (i = 0; i < spring_count; ++i)
+        for (end = 0; end < 2; ++end) {
+            const int p = end ? springs[i].b : springs[i].a;
+            int seen_before = 0;
+            motus_real sum[2];
+            if (p < 0) continue;
+            for (j = 0; j < i && !seen_before; ++j) seen_before = springs[j].a == p || springs[j].b == p;
+            if (seen_before) continue;
+            sum[0] = batch->force[0][p];
+            sum[1] = batch->force[1][p];
+            for (j = i; j < spring_count; ++j) {
+                motus_vec2 f;
+                if (springs[j].a != p && springs[j].b != p) continue;
+                f = motus__batch_spring_force(batch, &springs[j]);
+                if (springs[j].a == p) { sum[0] += f.x; sum[1] += f.y; }
+                else { sum[0] -= f.x; sum[1] -= f.y; } /* the second end gets -f */
+                if (!motus_real_is_finite(sum[0]) || !motus_real_is_finite(sum[1])) return MOTUS_ERROR_NOT_FINITE;
+            }
+        }
+    return MOTUS_OK;
+}
+#endif
+
 /* Adds the forces of `springs` (see motus_spring) to the force arrays of a 2D batch of `count` particles,
    as motus_stepper_step sums them; call it once per step for the whole batch, before stepping its ranges.
    Like motus_batch_step, a release build reads the data once: a NaN or Inf among the spring ends, or a sum
    that overflows, gives MOTUS_ERROR_NOT_FINITE after the forces were added. With MOTUS_CHECKED a spring
-   whose force or end forces are not finite is found first, and nothing is written. */
+   whose force or end forces are not finite, or a sum that would overflow, is found first, and nothing is
+   written. */
 MOTUS_API motus_result motus_batch_add_spring_forces(const motus_batch *batch, int count, const motus_spring *springs,
                                                      int spring_count) {
     motus_result result;
     motus__bits not_finite = 0;
-    int i, pass;
+    int i;
     if (!batch) return MOTUS_ERROR_NULL_POINTER;
     if (count < 0) return MOTUS_ERROR_INVALID_COUNT;
     if (batch->dimensions != 2 && batch->dimensions != 3) return MOTUS_ERROR_INVALID_SCENE;
@@ -2114,36 +2178,21 @@ MOTUS_API motus_result motus_batch_add_spring_forces(const motus_batch *batch, i
     if (spring_count < 0 || (spring_count > 0 && !springs)) return MOTUS_ERROR_INVALID_FORCES;
     result = motus__springs_check(springs, spring_count, count); /* as motus_forces_check, faster */
     if (result != MOTUS_OK) return result;
-    /* Pass 0 (checked builds only) computes every force and writes nothing; pass 1 adds them. */
 #ifdef MOTUS_CHECKED
-    pass = 0;
-#else
-    pass = 1;
+    result = motus__batch_springs_would_overflow(batch, springs, spring_count);
+    if (result != MOTUS_OK) return result;
 #endif
-    for (; pass < 2; ++pass) {
-        for (i = 0; i < spring_count; ++i) {
-            const motus_spring *s = &springs[i];
-            const int a = s->a, b = s->b, anchored = b < 0;
-            motus_vec2 xa = motus_v2(batch->position[0][a], batch->position[1][a]);
-            motus_vec2 va = motus_v2(batch->velocity[0][a], batch->velocity[1][a]);
-            motus_vec2 d = motus_vec2_sub(xa, anchored ? s->anchor : motus_v2(batch->position[0][b], batch->position[1][b]));
-            motus_vec2 relative = anchored ? va : motus_vec2_sub(va, motus_v2(batch->velocity[0][b], batch->velocity[1][b]));
-            motus_vec2 f = motus__spring_force(s, d, relative);
-            if (pass == 0) {
-                if (!motus_vec2_is_finite(f) || !motus_real_is_finite(batch->force[0][a]) ||
-                    !motus_real_is_finite(batch->force[1][a]) ||
-                    (!anchored && (!motus_real_is_finite(batch->force[0][b]) || !motus_real_is_finite(batch->force[1][b]))))
-                    return MOTUS_ERROR_NOT_FINITE;
-                continue;
-            }
-            batch->force[0][a] += f.x;
-            batch->force[1][a] += f.y;
-            not_finite |= motus__not_finite_bits(batch->force[0][a]) | motus__not_finite_bits(batch->force[1][a]);
-            if (!anchored) {
-                batch->force[0][b] -= f.x;
-                batch->force[1][b] -= f.y;
-                not_finite |= motus__not_finite_bits(batch->force[0][b]) | motus__not_finite_bits(batch->force[1][b]);
-            }
+    for (i = 0; i < spring_count; ++i) {
+        const motus_spring *s = &springs[i];
+        const int a = s->a, b = s->b;
+        const motus_vec2 f = motus__batch_spring_force(batch, s);
+        batch->force[0][a] += f.x;
+        batch->force[1][a] += f.y;
+        not_finite |= motus__not_finite_bits(batch->force[0][a]) | motus__not_finite_bits(batch->force[1][a]);
+        if (b >= 0) {
+            batch->force[0][b] -= f.x;
+            batch->force[1][b] -= f.y;
+            not_finite |= motus__not_finite_bits(batch->force[0][b]) | motus__not_finite_bits(batch->force[1][b]);
         }
     }
     /* Every force written (a NaN or Inf the arrays held, a spring's, or a sum that overflowed), tested by bit
@@ -2316,8 +2365,8 @@ MOTUS_API motus_vec2 motus_vec2_lerp(motus_vec2 a, motus_vec2 b, motus_real t) {
    motus_batch_add_spring_forces return MOTUS_ERROR_NOT_FINITE after they wrote, and a negative
    batch.inverse_mass[i] is not looked for.
    Checked builds (define MOTUS_CHECKED) find bad batch data first: motus_batch_step runs
-   motus_batch_check over its range, motus_batch_add_spring_forces computes every spring force first, and
-   on bad data nothing is written (a negative inverse mass is then MOTUS_ERROR_INVALID_MASS).
+   motus_batch_check over its range, motus_batch_add_spring_forces computes every spring force first and
+   makes sure that no particle's sum of them overflows, and on bad data nothing is written (a negative inverse mass is then MOTUS_ERROR_INVALID_MASS).
    Either build: call motus_particles_check or motus_batch_check_report where data comes in (a file, the
    network, an editor) to learn which particle and which field is bad. */
 

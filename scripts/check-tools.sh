@@ -93,8 +93,15 @@ run_fuzz() {
         # $fuzz_build/crash-* (replay it: $binary that-file).
         work="$fuzz_build/corpus_$variant"
         mkdir -p "$work"
-        "$binary" -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-                  -artifact_prefix="$fuzz_build/$variant-" "$work" tests/fuzz/corpus
+        # libFuzzer prints a line per new input (thousands): they go to a log, which is shown if it fails.
+        if ! "$binary" -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+                       -artifact_prefix="$fuzz_build/$variant-" "$work" tests/fuzz/corpus >"$fuzz_build/$variant.log" 2>&1
+        then
+            grep -v -E '^#[0-9]+[[:space:]]+(NEW|REDUCE|pulse)' "$fuzz_build/$variant.log" | tail -n 80 >&2 || true
+            echo "check-tools: fuzz $variant failed; full log: $fuzz_build/$variant.log" >&2
+            exit 1
+        fi
+        grep -E '^(#[0-9]+[[:space:]]+DONE|Done|stat::|INFO: seed corpus)' "$fuzz_build/$variant.log" || true
     done
     elapsed "fuzz (2 builds, 2 x $fuzz_seconds s)" "$start"
 }

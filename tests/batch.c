@@ -1266,6 +1266,55 @@ TEST(finite_sum_overflow_is_not_an_error) {
     ENSURE(array_of(&t, POSITION)[0] == REAL_MAX * MOTUS_R(0.88));
 }
 
+TEST(spring_force_sums_that_overflow) {
+    /* Every spring force finite, but two of them (0.6 of the largest real each) add up past it on one
+       particle: MOTUS_ERROR_NOT_FINITE, after writing in release builds, with nothing written in checked
+       ones (the fuzzer found a checked build writing here). Summed at a spring's first end, at its second
+       end, and, as controls, the same two forces cancelling on one particle and landing on two particles:
+       MOTUS_OK and exactly the forces of the single springs (the checked build's bound overflows there and
+       it replays each particle's sum). */
+    static test_batch t;
+    static motus_real saved[ARRAYS][STRIDE + GUARD];
+    const motus_real k = REAL_MAX * MOTUS_R(0.6);
+    motus_spring springs[2];
+    motus_scene s;
+    int c, i;
+    for (c = 0; c < 4; ++c) {
+        make_scene(&s, MOTUS_HAS_FORCES, MOTUS_SEMI_IMPLICIT_EULER);
+        bind(&t, 2, s.has, 1, 0);
+        fill_random(&t, &s, 3);
+        for (i = 0; i < 8; ++i) array_of(&t, POSITION)[i] = 0, array_of(&t, POSITION + 1)[i] = 0;
+        for (i = 0; i < N; ++i) array_of(&t, FORCE)[i] = 0, array_of(&t, FORCE + 1)[i] = 0;
+        memset(springs, 0, sizeof springs);
+        springs[0].stiffness = springs[1].stiffness = k; /* rest length 0, no damping: F = -k*d */
+        springs[0].b = springs[1].b = -1;
+        array_of(&t, POSITION)[1] = 1;                       /* d = (1, 0) from an anchor at 0: F = -k */
+        springs[0].a = 1;
+        springs[1].a = c == 2 ? 1 : c == 3 ? 2 : 1;
+        if (c == 2) springs[1].anchor.x = 2;                 /* d = (-1, 0): +k, cancelling */
+        if (c == 3) array_of(&t, POSITION)[2] = 1;           /* the same force on particle 2 */
+        if (c == 1) {                                        /* +k twice on particle 3, a second end */
+            springs[0].a = 4, springs[0].b = 3;              /* x4 - x3 = 1: particle 3 gets +k */
+            array_of(&t, POSITION)[4] = 1;
+            springs[1].a = 3, springs[1].anchor.x = 1;       /* d = (-1, 0): +k */
+        }
+        memcpy(saved, t.memory, sizeof saved);
+        if (c < 2) {
+            ENSURE_EQ_INT(motus_batch_add_spring_forces(&t.batch, N, springs, 2), MOTUS_ERROR_NOT_FINITE);
+#ifdef MOTUS_CHECKED
+            ENSURE(memcmp(saved, t.memory, sizeof saved) == 0);
+#else
+            ENSURE(array_of(&t, FORCE)[c == 0 ? 1 : 3] == (c == 0 ? -infinity() : infinity()));
+#endif
+            continue;
+        }
+        ENSURE_EQ_INT(motus_batch_add_spring_forces(&t.batch, N, springs, 2), MOTUS_OK);
+        ENSURE(array_of(&t, FORCE)[1] == (c == 2 ? 0 : -k));
+        ENSURE(array_of(&t, FORCE)[2] == (c == 2 ? 0 : -k));
+        ENSURE(array_of(&t, FORCE + 1)[1] == 0 && array_of(&t, FORCE + 1)[2] == 0);
+    }
+}
+
 /* =================================================================================================
    Bounds, damping, immovable particles
    ================================================================================================= */
@@ -1572,6 +1621,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(step_rejects_bad_ranges_and_time_steps),
     TEST_CASE(add_spring_forces_rejects_bad_arguments),
     TEST_CASE(add_spring_forces_equals_the_stepper_springs),
+    TEST_CASE(spring_force_sums_that_overflow),
     TEST_CASE(batch_check_finds_the_first_bad_particle),
     TEST_CASE(step_on_bad_data),
     TEST_CASE(overflow_is_not_finite),
