@@ -2366,7 +2366,8 @@ MOTUS_API motus_vec2 motus_vec2_lerp(motus_vec2 a, motus_vec2 b, motus_real t) {
    batch.inverse_mass[i] is not looked for.
    Checked builds (define MOTUS_CHECKED) find bad batch data first: motus_batch_step runs
    motus_batch_check over its range, motus_batch_add_spring_forces computes every spring force first and
-   makes sure that no particle's sum of them overflows, and on bad data nothing is written (a negative inverse mass is then MOTUS_ERROR_INVALID_MASS).
+   makes sure that no particle's sum of them overflows, and on bad data nothing is written (a negative
+   inverse mass is then MOTUS_ERROR_INVALID_MASS).
    Either build: call motus_particles_check or motus_batch_check_report where data comes in (a file, the
    network, an editor) to learn which particle and which field is bad. */
 
