@@ -1,201 +1,121 @@
-/* motus.h - v0.1.0 - MIT licensed (see end of file) - particle integration for games, one C99 header.
+/* motus.h - v0.2.0 - MIT licensed (see end of file) - particle integration for games, one C99 header.
 
-   USAGE
-   =====
-   Copy this file into your project and include it. There is nothing to compile separately, nothing is
-   allocated and there is no global state: every function is `static inline` and works on the data you pass.
+   TABLE OF CONTENTS (search for the tag)
+   =================
+   >>usage           two ways in: the textbook particle, and a scene stepped over arrays
+   >>conventions     units, axes, float or double, errors, immovable particles
+   >>config          macros you may define, with their defaults
+   >>types           motus_vec2/3, motus_particle/3, motus_result, motus_method, motus_scene, motus_state
+   >>declarations    every function motus has, in one list
+   >>methods         the nine integrators: order, cost, stability, what they do with velocity forces
+   >>determinism     what is bit-for-bit reproducible, and under which conditions
+   >>inline          the small functions, defined in every unit (vectors, particles, clock, messages)
+   >>implementation  the engine (kernels, checks, stability), compiled where MOTUS_IMPLEMENTATION is defined
+
+   >>usage
+   =======
+   The textbook step on one particle needs nothing but the include (every particle function is inline):
 
        #include "motus.h"
 
        motus_particle ball;
-       if (motus_particle_init(&ball, motus_v2(400, 300), 2) != MOTUS_OK) { ...bad mass... }
-
+       motus_particle_init(&ball, motus_v2(400, 300), 2);          // at the centre, 2 kg
        // every frame:
        motus_particle_clear_forces(&ball);
-       motus_particle_add_force(&ball, motus_v2(100, 0));    // push right
-       motus_result r = motus_particle_step(&ball, dt);      // v += F/m*dt; x += v*dt
-       motus_particle_damp_per_second(&ball, 0.55f, dt);     // keep 55% of the speed each second
+       motus_particle_add_force(&ball, motus_v2(100, 0));          // push right (N)
+       motus_particle_step(&ball, dt);                              // v += F/m*dt; x += v*dt
+       motus_particle_damp_per_step(&ball, 0.01f);                  // v *= 0.99, as the reference
+
+   A scene over many particles, with any integrator, in 2D or 3D: in exactly one C or C++ file write
+
+       #define MOTUS_IMPLEMENTATION
+       #include "motus.h"
+
+   and include motus.h anywhere else as usual. Then:
+
+       motus_scene scene = {0};                        // zero: no forces, semi-implicit Euler, 1 kg each
+       scene.gravity = motus_v3(0, 9.81f, 0);
+       scene.method = MOTUS_RK4;
+       motus_state state = motus_state_of_particles(balls, count);   // your motus_particle array, or:
+       // state.dimensions = 3; state.count = n; state.position[0] = x; ... (one array per component)
+       motus_result r = motus_step(&scene, &state, dt, NULL, 0);
        if (r != MOTUS_OK) fprintf(stderr, "motus: %s\n", motus_result_string(r));
 
-   Three ways to step, from the textbook to the fastest:
-   - motus_particle_step: one particle, semi-implicit Euler, the forces you added (the lines above);
-   - motus_stepper_step: an array of motus_particle under a force model (gravity, drags, springs, an
-     attractor, a callback) with any of nine integrators (see "Integrators");
-   - motus_batch_step: arrays of components (x[], y[], vx[], ...) stepped by a kernel compiled for exactly
-     the scene's features, vectorised, over a range a thread can own (see "Batch kernels").
+   Forces that couple particles (springs, a callback) need working memory: motus_scratch_size() bytes,
+   yours, passed to motus_step. motus allocates nothing and keeps no global state.
 
-   CONVENTIONS
-   ===========
+   >>conventions
+   =============
    - SI units: metres, seconds, kilograms, newtons. Nothing here cares what one unit is, so a game may use
-     pixels for metres (the reference program does: one unit = one pixel).
-   - The y axis points wherever you choose; motus never assumes "down". raylib's screen y grows downwards.
-   - `motus_real` is float unless you define MOTUS_DOUBLE before including this header.
-   - `motus_vec2` is two `motus_real`s, x then y, with no padding: in the float build it has the same layout as
-     raylib's `Vector2` (checked at compile time by the tests), so an array of either converts to the other
-     with one memcpy. Reading one through a pointer to the other would break C's aliasing rules.
-   - A particle stores its inverse mass. Inverse mass 0 is an immovable particle: forces never move it.
-   - Forces accumulate until you clear them. motus_particle_step does not clear them, so a force that is
-     constant over many steps (gravity) may be added once; the reference program clears every frame.
-   - Functions that can be handed bad input return a motus_result; on any result other than MOTUS_OK
-     nothing was written (the batch kernels' release builds excepted, for bad particle data). A count of 0
-     is valid and does nothing. motus_result_string turns a result into a sentence; what each build checks
-     is under "Validation and messages", with motus_particles_check to find the first bad particle.
+     pixels for metres (the reference program does).
+   - The y axis points wherever you choose; motus never assumes "down" (raylib's screen y grows downwards).
+   - `motus_real` is float unless you define MOTUS_DOUBLE before every include of this header.
+   - motus_vec2 and motus_vec3 are plain structs of motus_real (x, y[, z]) with raylib's Vector2 / Vector3
+     layout in the float build: copy field by field, or memcpy arrays of them (a cast between the two
+     types breaks C's aliasing rules).
+   - A particle stores its inverse mass. Inverse mass 0 is an immovable particle: no force, drag, damping
+     or spring changes its velocity. It still moves with the velocity it has (a platform you slide); give
+     it velocity 0 for a fixed anchor or obstacle.
+   - Forces accumulate until you clear them. The step does not clear them: a constant force may be added once.
+   - Every function that can be handed bad input returns a motus_result; on any result other than MOTUS_OK
+     nothing was written (see >>checks for the one documented exception). dt == 0 is a valid step of
+     nothing; a count of 0 is valid and does nothing. motus_result_string() turns a result into a sentence,
+     motus_scene_check() names the scene field at fault, motus_state_check() the particle and field.
+   - Zero means default in every description: a zeroed motus_scene is a valid scene with no forces.
    - No compound literals in the header, so it also compiles as C++.
 
-   CONFIGURATION
-   =============
+   >>config
+   ========
    Define these before including motus.h (all optional):
-   - MOTUS_DOUBLE          (undefined)      motus_real is double instead of float.
-   - MOTUS_API             (static inline)  storage class of every function. Keep internal linkage
-                                            (`static` or `static inline`): the functions are defined here.
-   - MOTUS_SQRT, MOTUS_EXP, MOTUS_EXPM1, MOTUS_POW
-                           (<math.h>: sqrtf/expf/expm1f/powf, or the double ones with MOTUS_DOUBLE)
-                           Define all four or none: they go together, as stb does with its hooks.
-   - MOTUS_SIMD_BYTES      (64 with AVX-512, 32 with AVX, else 16)  vector width of the batch kernels.
-                                            Wider than the target's registers works, but gcc and clang then
-                                            warn -Wpsabi (harmless: the functions are inline).
-   - MOTUS_NO_SIMD         (undefined)      batch kernels one particle at a time (the results are the same).
-   - MOTUS_CHECKED         (undefined)      motus_batch_step checks every particle of its range, and
-                                            motus_batch_add_spring_forces every spring, before writing
-                                            anything (see "Validation and messages": release builds don't).
-   - MOTUS_REST_SPEED      (1e-30f; 1e-300 with MOTUS_DOUBLE)  m/s: damping sets a velocity component
-                                            whose magnitude falls below this to zero (see SUBNORMALS). 0
-                                            turns the flush off.
-   - MOTUS_CLOCK_DEFAULT_MAX_STEPS (8)      steps a motus_clock runs per frame when given 0.
-   - MOTUS_ALLOW_FP_CONTRACT (undefined)    leave floating-point contraction to the compiler's flags. By
-                                            default motus turns it off for its own code (see DETERMINISM):
-                                            Clang: `#pragma STDC FP_CONTRACT OFF` between a float_control
-                                            push and pop, free, your code keeps its own setting; GCC (which
-                                            ignores the STDC pragma) in GNU modes on a target with FMA:
-                                            `#pragma GCC optimize("fp-contract=off")` between push_options
-                                            and pop_options. GCC then does not inline motus's functions into
-                                            code built with other options, which costs a call per function;
-                                            build with -ffp-contract=off to keep both the inlining and the
-                                            determinism, or define this to keep the inlining and the FMAs.
-   - MOTUS_ALLOW_FAST_MATH (undefined)      silence the message printed when motus is built with -ffast-math
-                                            (or -ffinite-math-only): see DETERMINISM for what it breaks.
-
-   DAMPING: PER STEP OR PER SECOND
-   ===============================
-   The reference program multiplies the velocity by 0.99 every frame. That is `motus_particle_damp_per_step`:
-   simple, but the motion depends on the frame rate. At 60 frames a second 0.99 keeps 0.99^60 = 55% of the
-   speed after one second, at 144 only 0.99^144 = 23%, at 30 it keeps 74%.
-   `motus_particle_damp_per_second(p, retained_per_second, dt)` multiplies by retained_per_second^dt instead,
-   so a second of motion keeps the same fraction at any rate. To carry a per-step factor over from a game that
-   ran at a fixed rate, use motus_damping_per_second_from_per_step(0.99, 60) = 0.547.
-   `motus_particle_step_linear_drag` goes one step further: it solves m*dv/dt = F - m*k*v exactly over the
-   step (F held constant), so the position too is the same at 30, 60 or 144 steps a second, up to rounding.
-
-   SUBNORMALS
-   ===
-   Damping multiplies a velocity by a factor < 1 every step, so a particle left alone slows down
-   geometrically: with 0.99 a step, 1 m/s goes below FLT_MIN (1.2e-38) after some 8,700 steps and then
-   never leaves the subnormal numbers: below 50 times the smallest one, 0.99*v rounds back to v.
-   Arithmetic on subnormals takes a slow path on many x86 cores (a microcode assist: tens to hundreds of
-   cycles per operation), and v*dt is subnormal too. motus_particle_damp_per_step / _per_second and the batch kernels' damping
-   therefore set a velocity component whose magnitude is below MOTUS_REST_SPEED to zero (keeping its
-   sign): 1e-30 m/s in float, a round number above FLT_MIN/1e-7 = 1.2e-31 so that v*dt stays a normal
-   float for any dt >= 1e-7 s, and far below anything a game can see (1e-300 in double). bench/subnormal
-   measures the cost with and without the flush.
-
-   DETERMINISM
-   ===========
-   The same scene, stepped the same way, ends in the same state bit for bit whatever builds it: GCC or
-   Clang, -O0 to -O3, with -march=native or without, as C or C++, with any MOTUS_SIMD_BYTES or
-   MOTUS_NO_SIMD; and the three ways to step agree with each other on a scene they can all run (the batch
-   kernels with motus_stepper_step followed by motus_particle_damp_per_step and motus_particle_bounce, and
-   motus_particle_step where the forces are all accumulated ones). tests/determinism.c checks this with
-   golden hashes of a 1000-particle scene, per method and per precision: 10^5 steps in the test build,
-   10^4 (500 at -O0) in each build of the gcc/clang x -O0/-O2/-O3/-O3 -march=native x C/C++ matrix.
-   This holds given:
-   - IEEE-754 arithmetic on motus_real with no excess precision (FLT_EVAL_METHOD 0: SSE2 on x86, any
-     arm64; not the x87 unit of 32-bit x86 builds without -msse2 -mfpmath=sse);
-   - no contraction of a*b + c into one fused multiply-add, which rounds once instead of twice. GCC in
-     its GNU modes (its default: no -std=c99/c11/c++NN) and Clang contract by default when the target has
-     FMA (-march=native on any recent x86; always on arm64). motus turns contraction off for its own code
-     (see MOTUS_ALLOW_FP_CONTRACT), except where a flag overrides the pragmas: -ffp-contract=fast given
-     to Clang, or to GCC in an ISO mode (-std=c99 ... -ffp-contract=fast). -ffp-contract=off is the
-     reliable, zero-cost way: it is what the tests build with. Other compilers: check their default
-     (MSVC contracts under /fp:fast and, before Visual Studio 2022, sometimes under /fp:precise);
-   - no -ffast-math, nor any of its parts (-ffinite-math-only, -fassociative-math, -freciprocal-math):
-     they let the compiler reorder sums, replace divisions, and assume that NaN never happens, which
-     removes motus's checks of a bad argument (`!(mass > 0)`), and linking with it flushes subnormals to
-     zero for the whole program. motus prints a message when __FAST_MATH__ or __FINITE_MATH_ONLY__ is
-     set (MOTUS_ALLOW_FAST_MATH silences it);
-   - the same libm, for the few functions that call it. sqrt is exact (correctly rounded) everywhere, so
-     springs with a rest length, quadratic drag and the attractor are deterministic. exp, expm1 and pow
-     are not correctly rounded in every libm, so results that go through them may differ between glibc,
-     musl, macOS and MSVC (and from a compiler that folds a call with constant arguments at build time):
-     motus_particle_damp_per_second and motus_damping_per_second_from_per_step (pow), the batch kernels'
-     MOTUS_HAS_DAMPING_PER_SECOND (pow, once per call), motus_particle_step_linear_drag and the stepper's
-     MOTUS_EXACT_LINEAR_DRAG (exp; expm1 too when drag*dt >= 0.5). Every other method and function uses
-     only + - * / and sqrt;
-   - subnormals not flushed to zero (no -ffast-math, no FTZ/DAZ bits set by other code);
-   - your own code (force callbacks, the forces you add) deterministic too: motus's pragmas cover only
-     the header.
+   - MOTUS_DOUBLE          (undefined)   motus_real is double instead of float (define it everywhere).
+   - MOTUS_IMPLEMENTATION  (undefined)   compile the engine in this unit (exactly one unit per program).
+   - MOTUS_STATIC          (undefined)   with MOTUS_IMPLEMENTATION: the engine's functions are `static`, for a
+                                         program of one unit (no link-time names).
+   - MOTUS_API             (extern, or static with MOTUS_STATIC)  linkage of the engine's functions.
+   - MOTUS_SQRT, MOTUS_EXP, MOTUS_EXPM1, MOTUS_POW  (<math.h>)  define all four or none.
+   - MOTUS_SIMD_BYTES      (64 with AVX-512, 32 with AVX, else 16)  lane width of the kernels.
+   - MOTUS_NO_SIMD         (undefined)   kernels one particle at a time (same results, bit for bit).
+   - MOTUS_CHECKED         (undefined)   motus_step checks every particle first and runs the step once without
+                                         storing before it writes: bad data or an overflow writes nothing.
+   - MOTUS_REST_SPEED      (1e-30f; 1e-300 with MOTUS_DOUBLE)  m/s: damping sets a velocity component below
+                                         this to zero (subnormals are slow on many x86 cores). 0: no flush.
+   - MOTUS_CLOCK_DEFAULT_MAX_STEPS (8)   steps a motus_clock runs per frame when given 0.
+   - MOTUS_ALLOW_FP_CONTRACT (undefined) leave a*b + c contraction to your compiler flags (see >>determinism).
+   - MOTUS_ALLOW_FAST_MATH (undefined)   silence the message printed under -ffast-math.
 */
 #ifndef MOTUS_H
 #define MOTUS_H
 
 #define MOTUS_VERSION_MAJOR 0
-#define MOTUS_VERSION_MINOR 1
+#define MOTUS_VERSION_MINOR 2
 #define MOTUS_VERSION_PATCH 0
-#define MOTUS_VERSION_STRING "0.1.0"
-/* One number that grows with every release: 10000*major + 100*minor + patch. */
+#define MOTUS_VERSION_STRING "0.2.0"
 #define MOTUS_VERSION (MOTUS_VERSION_MAJOR * 10000 + MOTUS_VERSION_MINOR * 100 + MOTUS_VERSION_PATCH)
 
 #include <math.h>
-#include <limits.h> /* INT_MAX */
 #include <stddef.h> /* size_t, NULL */
-#include <stdint.h> /* fixed-width integers for the bit-level finite check; no library code */
-#include <string.h> /* memcpy (the bit-level check in C++), memset (motus_stepper_init) */
+#include <stdint.h> /* fixed-width integers: the bit-level finite check, the clock's ticks */
+#include <string.h> /* memcpy (the bit-level check in C++) */
 
-/* =================================================================================================
-   Configuration
-   ================================================================================================= */
-/* Floating-point contraction off for the code of this header, restored at its end (see DETERMINISM and
-   MOTUS_ALLOW_FP_CONTRACT). A fused a*b + c rounds once where the source rounds twice, so a build that
-   contracts ends a long run in another state. Clang marks each operation, so what is inlined into your
-   code keeps its setting (float_control push/pop since Clang 11). GCC ignores the STDC pragma; its
-   optimize pragma works per function, and it contracts only in GNU modes (-ffp-contract=fast is their
-   default; ISO modes mean off) and only with an FMA instruction (__FP_FAST_FMA), so it is used only then. */
-#ifndef MOTUS_ALLOW_FP_CONTRACT
-#if defined(__clang__) && ((defined(__apple_build_version__) && __clang_major__ >= 13) ||                  \
-                           (!defined(__apple_build_version__) && __clang_major__ >= 11))
-#define MOTUS__FP_CONTRACT_PRAGMA_CLANG
-#pragma float_control(push)
-#pragma STDC FP_CONTRACT OFF
-#elif defined(__GNUC__) && !defined(__clang__) && !defined(__INTEL_COMPILER) && !defined(__STRICT_ANSI__) &&  \
-    (defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF))
-#define MOTUS__FP_CONTRACT_PRAGMA_GCC
-#pragma GCC push_options
-#pragma GCC optimize("fp-contract=off")
+/* >>config ====================================================================================== */
+#ifdef MOTUS_STATIC
+#define MOTUS__API_DEFAULT static
+#else
+#define MOTUS__API_DEFAULT extern
 #endif
+#ifndef MOTUS_API
+#define MOTUS_API MOTUS__API_DEFAULT
 #endif
+/* The small functions: defined in every unit, inlined where they are called. */
+#define MOTUS_DEF static inline
 
-/* -ffast-math lets the compiler assume that no value is NaN or infinite (which removes the checks that
-   reject a NaN argument), reorder sums and replace divisions (which changes results between builds), and
-   flushes subnormals to zero for the whole program. A message, not #warning: #warning is an extension
-   before C23, and -Wpedantic -Werror turns it into an error. */
 #if (defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__)) &&                   \
     !defined(MOTUS_ALLOW_FAST_MATH)
-#pragma message("motus.h: built with -ffast-math (or -ffinite-math-only): its NaN checks may be optimised away and results differ between builds; see DETERMINISM in motus.h, or define MOTUS_ALLOW_FAST_MATH")
-#endif
-
-#ifndef MOTUS_API
-#define MOTUS_API static inline
-#endif
-
-/* For the few per-particle helpers that must be inlined into their loops so that the compiler sees the
-   constant flags they are called with and drops the work of force terms a scene does not use. */
-#if defined(__GNUC__) || defined(__clang__)
-#define MOTUS__INLINE static inline __attribute__((always_inline))
-#else
-#define MOTUS__INLINE static inline
+#pragma message("motus.h: built with -ffast-math (or -ffinite-math-only): its NaN checks may be optimised away and results differ between builds; see >>determinism in motus.h, or define MOTUS_ALLOW_FAST_MATH")
 #endif
 
 #if defined(MOTUS_SQRT) || defined(MOTUS_EXP) || defined(MOTUS_EXPM1) || defined(MOTUS_POW)
-#define MOTUS_SQRT_CUSTOM /* then the batch kernels call it too, lane by lane */
+#define MOTUS_SQRT_CUSTOM
 #if !defined(MOTUS_SQRT) || !defined(MOTUS_EXP) || !defined(MOTUS_EXPM1) || !defined(MOTUS_POW)
 #error "motus.h: define all of MOTUS_SQRT, MOTUS_EXP, MOTUS_EXPM1 and MOTUS_POW, or none of them"
 #endif
@@ -236,65 +156,396 @@ typedef uint32_t motus__bits;
 #define MOTUS_REST_SPEED 1e-30f
 #endif
 #endif
+#ifndef MOTUS_CLOCK_DEFAULT_MAX_STEPS
+#define MOTUS_CLOCK_DEFAULT_MAX_STEPS 8
+#endif
+
+/* Contraction of a*b + c into one fused multiply-add rounds once where the source rounds twice, so a build
+   that contracts ends a long run elsewhere (see >>determinism). GCC contracts by default in its GNU modes
+   when the target has FMA; Clang when the target has FMA, unless told otherwise. motus keeps its results
+   independent of that without slowing your code down:
+   - the inline functions (compiled into your code, with your flags) pass each product that feeds an add
+     through MOTUS__ROUND, an empty asm that makes the product a value the compiler must hold, so it
+     cannot fuse it; free, and it does not stop inlining (GCC's optimize pragma did);
+   - the engine (one unit) is compiled under `#pragma STDC FP_CONTRACT OFF` (Clang) or
+     `#pragma GCC optimize("fp-contract=off")` (GCC), which costs nothing there. */
+#if !defined(MOTUS_ALLOW_FP_CONTRACT) && (defined(__GNUC__) || defined(__clang__)) && !defined(__STRICT_ANSI__) && \
+    (defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF) || defined(__FMA__) || defined(__aarch64__))
+#if defined(__x86_64__) || defined(__i386__)
+#define MOTUS__ROUND_CONSTRAINT "+x"
+#elif defined(__aarch64__) || defined(__arm__)
+#define MOTUS__ROUND_CONSTRAINT "+w"
+#endif
+#endif
+#if defined(__clang__) && !defined(MOTUS_ALLOW_FP_CONTRACT) && (defined(__FMA__) || defined(__aarch64__))
+/* Clang with -std=c99 and FMA still contracts (its default is "on" within a statement). */
+#if !defined(MOTUS__ROUND_CONSTRAINT) && (defined(__x86_64__) || defined(__i386__))
+#define MOTUS__ROUND_CONSTRAINT "+x"
+#elif !defined(MOTUS__ROUND_CONSTRAINT) && defined(__aarch64__)
+#define MOTUS__ROUND_CONSTRAINT "+w"
+#endif
+#endif
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* =================================================================================================
-   Types
-   ================================================================================================= */
+/* >>types ======================================================================================= */
 typedef struct motus_vec2 {
     motus_real x, y;
 } motus_vec2;
 
+typedef struct motus_vec3 {
+    motus_real x, y, z;
+} motus_vec3;
+
+/* One particle of a game's own array, in 2D; motus_particle3 is the same in 3D. The engine steps arrays of
+   either (motus_state_of_particles), so a game can keep its particles in these structs. */
 typedef struct motus_particle {
-    motus_vec2 position;
-    motus_vec2 velocity;
-    motus_vec2 force;        /* sum of the forces added since the last clear */
-    motus_real inverse_mass; /* 1/mass; 0 = immovable */
+    motus_vec2 position;     /* m */
+    motus_vec2 velocity;     /* m/s */
+    motus_vec2 force;        /* N: sum of the forces added since the last clear */
+    motus_real inverse_mass; /* 1/kg; 0 = immovable */
 } motus_particle;
 
-typedef enum motus_result {
-    MOTUS_OK = 0,
-    MOTUS_ERROR_NULL_POINTER,      /* a pointer argument was NULL */
-    MOTUS_ERROR_NOT_FINITE,        /* an input (argument or particle field) was NaN or infinite */
-    MOTUS_ERROR_INVALID_MASS,      /* mass <= 0, or so small that 1/mass overflows; or inverse mass < 0 */
-    MOTUS_ERROR_INVALID_TIME_STEP, /* dt <= 0, NaN or infinite */
-    MOTUS_ERROR_INVALID_DAMPING,   /* a damping factor outside [0, 1], or a drag rate < 0 */
-    MOTUS_ERROR_OVERFLOW,          /* finite inputs, but the result would not be finite */
-    MOTUS_ERROR_INVALID_COUNT,     /* a particle count < 0, or more than the stepper was made for */
-    MOTUS_ERROR_INVALID_FORCES,    /* a force model field out of range (negative drag, spring index, ...) */
-    MOTUS_ERROR_SCRATCH_TOO_SMALL, /* the memory given to a stepper is smaller than it needs */
-    MOTUS_ERROR_UNSUPPORTED,       /* the method cannot handle this force model (see motus_method) */
-    MOTUS_ERROR_INVALID_SCENE,     /* a scene that contradicts itself or its batch (see motus_scene_check) */
-    MOTUS_ERROR_TOO_STIFF,         /* more substeps needed than allowed, or no dt is stable for the method */
-    MOTUS_ERROR_INVALID_ARGUMENT,  /* an argument out of its documented range (safety factor, substep cap) */
-    MOTUS_ERROR_INVALID_DESC,      /* a desc with unknown flag bits, or scratch not aligned for motus_real */
-    MOTUS_ERROR_INVALID_FRAME_TIME, /* a frame time < 0, NaN or infinite (motus_clock_advance) */
-    MOTUS_RESULT_COUNT
-} motus_result;
+typedef struct motus_particle3 {
+    motus_vec3 position, velocity, force;
+    motus_real inverse_mass;
+} motus_particle3;
 
-/* =================================================================================================
-   Vector helpers (the few the step needs; raymath has the rest and shares the layout)
-   ================================================================================================= */
-MOTUS_API motus_vec2 motus_v2(motus_real x, motus_real y) {
+/* Results: one table, so that the enum and the sentences cannot drift apart. */
+#define MOTUS__RESULTS(X)                                                                                        \
+    X(MOTUS_OK, "ok")                                                                                            \
+    X(MOTUS_ERROR_NULL_POINTER, "a pointer argument was NULL, or an array the count or the scene needs")          \
+    X(MOTUS_ERROR_NOT_FINITE, "an input was NaN or infinite (an argument, a particle field, a scene value); "     \
+                              "all must be finite")                                                              \
+    X(MOTUS_ERROR_INVALID_MASS, "mass must be finite and > 0 with 1/mass finite; an inverse mass must be >= 0 "   \
+                                "(0 = immovable)")                                                               \
+    X(MOTUS_ERROR_INVALID_TIME_STEP, "dt must be finite and >= 0 seconds (0 steps nothing)")                     \
+    X(MOTUS_ERROR_INVALID_DAMPING, "damping (per step or per second) must be in [0, 1], and not both set")       \
+    X(MOTUS_ERROR_INVALID_DRAG, "linear and quadratic drag must be >= 0")                                        \
+    X(MOTUS_ERROR_INVALID_ATTRACTOR, "attractor strength must be >= 0")                                          \
+    X(MOTUS_ERROR_INVALID_BOUNDS, "bounds: each component of bounds_min must be <= that of bounds_max")          \
+    X(MOTUS_ERROR_INVALID_RESTITUTION, "restitution must be in [0, 1]")                                          \
+    X(MOTUS_ERROR_INVALID_SPRING, "a spring's ends must be in [0, count) (b = -1: anchored) and differ; its "     \
+                                  "rest length, stiffness and damping >= 0; springs not NULL when counted")      \
+    X(MOTUS_ERROR_INVALID_METHOD, "method must be one of motus_method")                                          \
+    X(MOTUS_ERROR_INVALID_SUBSTEPS, "substeps must be >= 0 (0 and 1 both mean one step)")                        \
+    X(MOTUS_ERROR_INVALID_DIMENSIONS, "dimensions must be 2 or 3 (0 means 2)")                                   \
+    X(MOTUS_ERROR_INVALID_COUNT, "count and first must be >= 0 and first + count within the state")              \
+    X(MOTUS_ERROR_INVALID_STRIDE, "stride must be >= 0 (0 means 1: plain arrays)")                                \
+    X(MOTUS_ERROR_ALIASING, "two state arrays that motus writes (position, velocity) start at the same address") \
+    X(MOTUS_ERROR_SCRATCH_TOO_SMALL, "scratch too small or not aligned: give motus_scratch_size() bytes, aligned " \
+                                     "for motus_real")                                                           \
+    X(MOTUS_ERROR_UNSUPPORTED, "unsupported: the exact stepper takes gravity, linear drag, damping, bounds and "  \
+                               "accumulated forces only; motus_step_range takes no springs or callback")          \
+    X(MOTUS_ERROR_OVERFLOW, "the inputs were finite but the result would not be (overflow, or a callback's NaN); " \
+                            "use a smaller dt or smaller forces")                                                \
+    X(MOTUS_ERROR_TOO_STIFF, "too stiff for this dt: more substeps needed than allowed, or the method is "        \
+                             "unstable on a spring at any dt (explicit Euler, midpoint)")                        \
+    X(MOTUS_ERROR_INVALID_ARGUMENT, "argument out of range: a safety factor must be in (0, 1], a substep cap "    \
+                                    ">= 1, a stable step >= 0")                                                  \
+    X(MOTUS_ERROR_INVALID_FRAME_TIME, "frame time must be finite and >= 0 seconds; the clock was left as it was")
+
+#define MOTUS__RESULT_ENUM(name, text) name,
+typedef enum motus_result { MOTUS__RESULTS(MOTUS__RESULT_ENUM) MOTUS_RESULT_COUNT } motus_result;
+#undef MOTUS__RESULT_ENUM
+
+/* The integrators (see >>methods). One row each: name, order, force evaluations per step, stability limit
+   (w*h on an undamped spring; 0 = unstable at any dt, -1 = no spring taken). */
+#define MOTUS__METHODS(X)                                                                                        \
+    X(MOTUS_SEMI_IMPLICIT_EULER, "semi_implicit_euler", 1, 1, 2.0)                                               \
+    X(MOTUS_EXPLICIT_EULER, "explicit_euler", 1, 1, 0.0)                                                         \
+    X(MOTUS_POSITION_VERLET, "position_verlet", 2, 1, 2.0)                                                       \
+    X(MOTUS_VELOCITY_VERLET, "velocity_verlet", 2, 2, 2.0)                                                       \
+    X(MOTUS_LEAPFROG, "leapfrog", 2, 2, 2.0)                                                                     \
+    X(MOTUS_MIDPOINT, "midpoint", 2, 2, 0.0)                                                                     \
+    X(MOTUS_RK4, "rk4", 4, 4, 2.8284271247461900976)                                                             \
+    X(MOTUS_FOREST_RUTH, "forest_ruth", 4, 3, 1.5734019474345367)                                                \
+    X(MOTUS_EXACT_LINEAR_DRAG, "exact_linear_drag", 0, 0, -1.0)
+#define MOTUS__METHOD_ENUM(name, text, order, evaluations, limit) name,
+typedef enum motus_method { MOTUS__METHODS(MOTUS__METHOD_ENUM) MOTUS_METHOD_COUNT } motus_method;
+#undef MOTUS__METHOD_ENUM
+#define MOTUS__MAX_EVALUATIONS 4
+
+/* A spring between particles a and b, or from a to a fixed `anchor` (b = -1). The same in 2D and 3D (z is
+   ignored in 2D). Hooke with damping on the rate of stretch:
+       F_a = -(k*(|d| - L) + c*((v_a - v_b).d/|d|)) * d/|d|,  d = x_a - x_b;  F_b = -F_a
+   With rest length L = 0 this is F_a = -k*d - c*((v_a - v_b).d/|d|^2)*d: no square root. */
+typedef struct motus_spring {
+    int a, b;
+    motus_vec3 anchor;      /* the fixed end when b == -1 */
+    motus_real rest_length; /* L >= 0, m */
+    motus_real stiffness;   /* k >= 0, N/m */
+    motus_real damping;     /* c >= 0, N*s/m */
+} motus_spring;
+
+/* What a force callback is handed at each stage of a step: the stage's state of every particle, as plain
+   arrays (index 0 is the state's first particle), and where to add its forces. */
+typedef struct motus_force_query {
+    int dimensions, count;
+    int stage;                          /* 0 .. evaluations-1 */
+    motus_real time;                    /* s since the start of this call's step (substep), at this stage */
+    const motus_real *position[3];      /* m, per component; [2] NULL in 2D */
+    const motus_real *velocity[3];      /* m/s */
+    motus_real *force[3];               /* N: add yours here; they start at zero */
+} motus_force_query;
+typedef void (*motus_force_callback)(void *user_data, const motus_force_query *query);
+
+/* Everything that acts on the particles, and how to step them. Zero means default (sokol's descs, Box2D's
+   definitions): `motus_scene scene = {0};` (C) or `motus_scene scene{};` (C++) is semi-implicit Euler with
+   no forces and particles of 1 kg; set what the scene has. Every term that is zero costs nothing. */
+typedef struct motus_scene {
+    motus_method method;            /* 0: MOTUS_SEMI_IMPLICIT_EULER */
+    int substeps;                   /* each motus_step is this many steps of dt/substeps (0, 1: one) */
+    motus_vec3 gravity;             /* m/s^2, a uniform acceleration (z ignored in 2D) */
+    motus_real linear_drag;         /* k >= 0, 1/s: a -= k*v */
+    motus_real quadratic_drag;      /* c >= 0, 1/m: a -= c*|v|*v */
+    motus_real damping_per_step;    /* in [0, 1]: the fraction of velocity removed after each motus_step
+                                       (0.01: v *= 0.99 a step, the reference program); frame-rate dependent */
+    motus_real damping_per_second;  /* in [0, 1]: the fraction removed per second, v *= (1 - d)^dt; the
+                                       same motion at any frame rate. At most one of the two is set. */
+    motus_vec3 attractor;           /* position of an inverse-square attractor (a sun), m */
+    motus_real attractor_strength;  /* mu = G*M >= 0, m^3/s^2: a -= mu*r/|r|^3, r from the attractor */
+    motus_vec3 bounds_min, bounds_max; /* a box the particles stay in; off while all six are 0. A component
+                                       may be -Inf/+Inf: no wall on that side */
+    motus_real restitution;         /* in [0, 1]: the share of normal speed kept through a wall bounce */
+    motus_real mass;                /* kg of every particle when the state has no inverse_mass array (0: 1) */
+    const motus_spring *springs;    /* spring_count springs (they couple particles: scratch needed) */
+    int spring_count;
+    motus_force_callback force_callback; /* your forces, at every stage (couples: scratch needed) */
+    void *user_data;                /* handed to force_callback */
+} motus_scene;
+
+/* Where the particles are: one array per component (structure of arrays), or pointers into your own
+   structs with a stride. motus writes position and velocity and reads the rest. Zero means default. */
+typedef struct motus_state {
+    int dimensions;              /* 2 or 3 (0: 2) */
+    int count;                   /* particles */
+    int stride;                  /* motus_reals from one particle's value to the next (0: 1, plain arrays) */
+    motus_real *position[3];     /* x, y (, z) */
+    motus_real *velocity[3];
+    const motus_real *force[3];  /* accumulated forces, N, held over the step; NULL: none */
+    const motus_real *inverse_mass; /* 1/kg per particle (0: immovable); NULL: every particle has scene.mass */
+} motus_state;
+
+/* Where a check found the first bad particle or field. */
+typedef enum motus_field {
+    MOTUS_FIELD_NONE = 0,
+    MOTUS_FIELD_POSITION,
+    MOTUS_FIELD_VELOCITY,
+    MOTUS_FIELD_FORCE,
+    MOTUS_FIELD_INVERSE_MASS,
+    MOTUS_FIELD_COUNT
+} motus_field;
+typedef struct motus_check_report {
+    int index;              /* the first bad particle (its index in the state), or -1 */
+    motus_field field;
+    int component;          /* 0 x, 1 y, 2 z; -1 for the inverse mass and for none */
+    const char *field_name; /* "position", "velocity", "force", "inverse_mass", "none"; or the scene's field
+                               ("scene.gravity.y", ...) when the scene is at fault. Never NULL. */
+} motus_check_report;
+
+/* The fixed-step clock (see motus_clock_advance). */
+typedef struct motus_clock {
+    motus_real fixed_dt;               /* s, the dt of every step */
+    int max_steps_per_frame;           /* the cap against the spiral of death */
+    uint64_t accumulator;              /* ticks not stepped yet: < 2^32 (one step) between frames */
+    uint64_t steps_total;              /* steps run since init */
+    uint64_t steps_dropped_last_frame; /* whole steps the cap dropped in the last advance */
+    uint64_t steps_dropped_total;      /* since init (saturates at 2^64 - 1) */
+    motus_real time_dropped_last_frame; /* s */
+    double time_dropped_total;         /* s, since init */
+} motus_clock;
+
+/* >>declarations ================================================================================
+   Vectors (inline): motus_v2, motus_v3, motus_vec2_add/sub/scale/dot/length/lerp/is_finite and the same for
+   motus_vec3; motus_real_is_finite.
+   Particles (inline; the same with motus_particle3_ and motus_vec3 in 3D): */
+MOTUS_DEF motus_result motus_particle_init(motus_particle *particle, motus_vec2 position, motus_real mass);
+MOTUS_DEF motus_result motus_particle_init_immovable(motus_particle *particle, motus_vec2 position);
+MOTUS_DEF motus_real motus_particle_mass(const motus_particle *particle);   /* +Inf immovable, NaN for NULL */
+MOTUS_DEF motus_result motus_particle_check(const motus_particle *particle);
+MOTUS_DEF motus_result motus_particle_add_force(motus_particle *particle, motus_vec2 force);
+MOTUS_DEF motus_result motus_particle_clear_forces(motus_particle *particle);
+MOTUS_DEF motus_result motus_particle_step(motus_particle *particle, motus_real dt); /* semi-implicit Euler */
+MOTUS_DEF motus_result motus_particle_step_compensated(motus_particle *particle, motus_vec2 *carry, motus_real dt);
+MOTUS_DEF motus_result motus_particle_damp_per_step(motus_particle *particle, motus_real damping);
+MOTUS_DEF motus_result motus_particle_damp_per_second(motus_particle *particle, motus_real damping_per_second,
+                                                      motus_real dt);
+MOTUS_DEF motus_result motus_particle_bounce(motus_particle *particle, motus_vec2 bounds_min, motus_vec2 bounds_max,
+                                             motus_real restitution);
+MOTUS_DEF motus_result motus_particle3_init(motus_particle3 *particle, motus_vec3 position, motus_real mass);
+MOTUS_DEF motus_result motus_particle3_init_immovable(motus_particle3 *particle, motus_vec3 position);
+MOTUS_DEF motus_real motus_particle3_mass(const motus_particle3 *particle);
+MOTUS_DEF motus_result motus_particle3_check(const motus_particle3 *particle);
+MOTUS_DEF motus_result motus_particle3_add_force(motus_particle3 *particle, motus_vec3 force);
+MOTUS_DEF motus_result motus_particle3_clear_forces(motus_particle3 *particle);
+MOTUS_DEF motus_result motus_particle3_step(motus_particle3 *particle, motus_real dt);
+MOTUS_DEF motus_result motus_particle3_step_compensated(motus_particle3 *particle, motus_vec3 *carry, motus_real dt);
+MOTUS_DEF motus_result motus_particle3_damp_per_step(motus_particle3 *particle, motus_real damping);
+MOTUS_DEF motus_result motus_particle3_damp_per_second(motus_particle3 *particle, motus_real damping_per_second,
+                                                       motus_real dt);
+MOTUS_DEF motus_result motus_particle3_bounce(motus_particle3 *particle, motus_vec3 bounds_min, motus_vec3 bounds_max,
+                                              motus_real restitution);
+/* States over your arrays of particles (inline): */
+MOTUS_DEF motus_state motus_state_of_particles(motus_particle *particles, int count);
+MOTUS_DEF motus_state motus_state_of_particles3(motus_particle3 *particles, int count);
+
+/* Methods (inline): name ("rk4"), order (0: exact), force evaluations per step, stability limit (see
+   >>methods); NULL / -1 for a value out of range. */
+MOTUS_DEF const char *motus_method_name(motus_method method);
+MOTUS_DEF int motus_method_order(motus_method method);
+MOTUS_DEF int motus_method_evaluations(motus_method method);
+MOTUS_DEF motus_real motus_method_stability_limit(motus_method method);
+MOTUS_DEF motus_result motus_max_stable_dt(motus_method method, motus_real stiffness, motus_real mass,
+                                           motus_real *max_dt);
+MOTUS_DEF motus_result motus_substeps_for(motus_real dt, motus_real max_stable_dt, motus_real safety, int *substeps);
+
+/* The engine (compiled where MOTUS_IMPLEMENTATION is defined): */
+/* Advances every particle of `state` by dt under `scene`: scene.substeps steps of dt/substeps, each by
+   scene.method with the bounds after it, then the damping. scratch: motus_scratch_size() bytes for a scene
+   with springs or a callback, else NULL/0. */
+MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *state, motus_real dt, void *scratch,
+                                  size_t scratch_bytes);
+/* The same over particles [first, first + count) only, for a scene whose forces do not couple particles
+   (no springs, no callback): each particle's result does not depend on how a range is split, so threads
+   can each step their own range. */
+MOTUS_API motus_result motus_step_range(const motus_scene *scene, const motus_state *state, int first, int count,
+                                        motus_real dt);
+/* Bytes of scratch motus_step needs for this scene and state (0: none); (size_t)-1 if the sizes overflow. */
+MOTUS_API size_t motus_scratch_size(const motus_scene *scene, const motus_state *state);
+/* MOTUS_OK if the scene is valid for a state of `dimensions` (0: 2) and `count` particles (for the spring
+   ends); otherwise the result, with the field at fault in report->field_name ("scene.damping_per_step"). */
+MOTUS_API motus_result motus_scene_check(const motus_scene *scene, int dimensions, int count,
+                                         motus_check_report *report);
+/* The first bad particle of [first, first + count): a NaN or Inf in what the scene reads, or a negative
+   inverse mass. report (may be NULL) says which particle, field and component. */
+MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_state *state, int first, int count,
+                                         motus_check_report *report);
+/* The largest dt the scene's springs and drags allow for its method (Gershgorin bound, see >>methods);
+   +Inf when nothing limits it. scratch as for motus_step. */
+MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const motus_state *state,
+                                                 motus_real *max_dt, void *scratch, size_t scratch_bytes);
+
+/* Clock and messages (inline): */
+MOTUS_DEF motus_result motus_clock_init(motus_clock *clock, motus_real fixed_dt, int max_steps_per_frame);
+MOTUS_DEF motus_result motus_clock_advance(motus_clock *clock, motus_real frame_seconds, int *steps_to_run);
+MOTUS_DEF motus_real motus_clock_alpha(const motus_clock *clock);
+MOTUS_DEF double motus_clock_time(const motus_clock *clock);
+MOTUS_DEF const char *motus_result_string(motus_result result);
+MOTUS_DEF const char *motus_field_name(motus_field field);
+MOTUS_DEF motus_result motus_particles_check(const motus_particle *particles, int count, motus_check_report *report);
+MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, int count,
+                                              motus_check_report *report);
+
+/* >>methods
+   =========
+   method               order  evals  symplectic  stable on a spring   with drag (velocity forces)
+   SEMI_IMPLICIT_EULER  1      1      yes         w*h < 2              1st order
+     v += a(x, v)*h; x += v*h. The textbook step (motus_particle_step is this method, bit for bit).
+   EXPLICIT_EULER       1      1      no          never                1st order
+     x += v*h; v += a(x, v)*h. Adds energy to every oscillation: (x, v/w) grows by sqrt(1 + (w*h)^2).
+   POSITION_VERLET      2      1      yes         w*h < 2              1st order
+     Drift-kick-drift (Stormer-Verlet in position form): x_m = x + v*h/2; v += a(x_m, v)*h; x = x_m + v*h/2.
+     Self-starting and its velocity is the synchronised one: on a Kepler orbit its energy error is
+     velocity Verlet's, not the 8x of the old x_{n+1} - x_n form that needed the last step kept.
+   VELOCITY_VERLET      2      2      yes         w*h < 2              2nd order (v predicted to the end)
+     x += v*h + a0*h^2/2; v += (a0 + a(x_new, v + a0*h))*h/2.
+   LEAPFROG             2      2      yes         w*h < 2              2nd order
+     Kick-drift-kick: v += a0*h/2; x += v*h; v += a(x_new, v + a0*h/2)*h/2. Velocity Verlet's map written
+     with the half-step velocity; they differ in rounding only. Time-reversible.
+   MIDPOINT             2      2      no          never                2nd order
+     Explicit midpoint RK2; grows a spring's amplitude by sqrt(1 + (w*h)^4/4) per step.
+   RK4                  4      4      no          w*h < 2*sqrt(2)      4th order
+     Classic Runge-Kutta; energy drifts by O(h^4) per unit time.
+   FOREST_RUTH          4      3      yes         w*h < 1.5734         1st order (a kick is Euler in v)
+     Yoshida's triple jump of leapfrog, theta = 1/(2 - 2^(1/3)): D(th/2) K(th) D((1-th)/2) K(1-2th)
+     D((1-th)/2) K(th) D(th/2). 4th order for forces of position only.
+   EXACT_LINEAR_DRAG    exact  0      -           takes no spring      exact
+     Solves v' = g + F/m - k*v over the step: v = v0*e^-u + a*c1, x = x0 + v0*c1 + a*c2 with u = k*h,
+     c1 = (1 - e^-u)/k, c2 = (h - c1)/k (series for small u). Exact at any dt. Only gravity, linear drag,
+     accumulated forces, damping and bounds: anything else is MOTUS_ERROR_UNSUPPORTED.
+   STABILITY: on x'' = -w^2 x each method's step is a linear map of (x, v/w) that depends on z = w*h; the
+   limits above are where its eigenvalues leave the unit circle (semi-implicit Euler and the Verlets: trace
+   2 - z^2, |trace| < 2; RK4: |R(iz)|^2 = 1 - z^6/72 + z^8/576 <= 1; Forest-Ruth: trace 2 - u + u^2/12 +
+   c*u^3, u = z^2, c = 0.1295084). Damping g (drags, spring damping) moves the eigenvalues off the axis:
+   w_eff = alpha*g/2 + sqrt((alpha*g/2)^2 + w^2) must stay below the limit over h, alpha = 1 (Euler and
+   Verlet family; exact for semi-implicit Euler), 2.8284/2.7853 (RK4), 2 (Forest-Ruth).
+   motus_scene_max_stable_dt bounds w^2 by Gershgorin on M^-1*K: max over movable j of sum over j's springs
+   of k*(1/m_j + 1/m_other).
+   COUPLING: forces that do not couple particles (gravity, drags, the attractor, accumulated forces, damping,
+   bounds) are evaluated in registers, particle by particle, all stages of the method at once: one read
+   and one write of the state per motus_step whatever the order and the substeps. Springs and the callback
+   couple particles: each stage then is a pass over the particles that records the stage's state in
+   scratch, then the callback and the springs add the stage's forces, then the next stage; the last pass
+   stores the result. The same code runs both ways, so a scene gives the same bits with or without a
+   callback that adds nothing.
+
+   >>determinism
+   =============
+   The same scene, stepped the same way, ends in the same state bit for bit whatever builds it: GCC or
+   Clang, -O0 to -O3, with -march=native or not, as C or C++, at any MOTUS_SIMD_BYTES or MOTUS_NO_SIMD, over
+   plain arrays or your structs, whole or split in ranges; motus_particle_step equals the semi-implicit
+   Euler scene on accumulated forces. tests/determinism.c checks it with golden hashes. This holds given
+   IEEE-754 arithmetic with no excess precision (SSE2 or arm64, not x87); no contraction of a*b + c into an
+   FMA that motus did not prevent (it prevents it in its own code, see >>config); no -ffast-math or its
+   parts; subnormals not flushed; the same libm for the few calls that use it (sqrt is exact everywhere;
+   pow for damping_per_second, once per step; exp and expm1 for the exact stepper, once per step).
+*/
+
+/* >>inline ====================================================================================== */
+
+/* A product that must round before it is added (see >>config). */
+#ifdef MOTUS__ROUND_CONSTRAINT
+MOTUS_DEF motus_real motus__round(motus_real x) {
+    __asm__("" : MOTUS__ROUND_CONSTRAINT(x));
+    return x;
+}
+#define MOTUS__ROUND(x) motus__round(x)
+#else
+#define MOTUS__ROUND(x) (x)
+#endif
+
+MOTUS_DEF motus_vec2 motus_v2(motus_real x, motus_real y) {
     motus_vec2 v;
     v.x = x;
     v.y = y;
     return v;
 }
-MOTUS_API motus_vec2 motus_vec2_add(motus_vec2 a, motus_vec2 b) { return motus_v2(a.x + b.x, a.y + b.y); }
-MOTUS_API motus_vec2 motus_vec2_sub(motus_vec2 a, motus_vec2 b) { return motus_v2(a.x - b.x, a.y - b.y); }
-MOTUS_API motus_vec2 motus_vec2_scale(motus_vec2 v, motus_real s) { return motus_v2(v.x * s, v.y * s); }
-MOTUS_API motus_real motus_vec2_dot(motus_vec2 a, motus_vec2 b) { return a.x * b.x + a.y * b.y; }
-MOTUS_API motus_real motus_vec2_length(motus_vec2 v) { return MOTUS_SQRT(motus_vec2_dot(v, v)); }
+MOTUS_DEF motus_vec3 motus_v3(motus_real x, motus_real y, motus_real z) {
+    motus_vec3 v;
+    v.x = x;
+    v.y = y;
+    v.z = z;
+    return v;
+}
+MOTUS_DEF motus_vec2 motus_vec2_add(motus_vec2 a, motus_vec2 b) { return motus_v2(a.x + b.x, a.y + b.y); }
+MOTUS_DEF motus_vec2 motus_vec2_sub(motus_vec2 a, motus_vec2 b) { return motus_v2(a.x - b.x, a.y - b.y); }
+MOTUS_DEF motus_vec2 motus_vec2_scale(motus_vec2 v, motus_real s) { return motus_v2(v.x * s, v.y * s); }
+MOTUS_DEF motus_real motus_vec2_dot(motus_vec2 a, motus_vec2 b) {
+    return MOTUS__ROUND(a.x * b.x) + MOTUS__ROUND(a.y * b.y);
+}
+MOTUS_DEF motus_real motus_vec2_length(motus_vec2 v) { return MOTUS_SQRT(motus_vec2_dot(v, v)); }
+/* a + (b - a)*t: t = 0 gives a exactly; for drawing between two steps with t = motus_clock_alpha. */
+MOTUS_DEF motus_vec2 motus_vec2_lerp(motus_vec2 a, motus_vec2 b, motus_real t) {
+    return motus_v2(a.x + MOTUS__ROUND((b.x - a.x) * t), a.y + MOTUS__ROUND((b.y - a.y) * t));
+}
+MOTUS_DEF motus_vec3 motus_vec3_add(motus_vec3 a, motus_vec3 b) { return motus_v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+MOTUS_DEF motus_vec3 motus_vec3_sub(motus_vec3 a, motus_vec3 b) { return motus_v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+MOTUS_DEF motus_vec3 motus_vec3_scale(motus_vec3 v, motus_real s) { return motus_v3(v.x * s, v.y * s, v.z * s); }
+MOTUS_DEF motus_real motus_vec3_dot(motus_vec3 a, motus_vec3 b) {
+    return MOTUS__ROUND(a.x * b.x) + MOTUS__ROUND(a.y * b.y) + MOTUS__ROUND(a.z * b.z);
+}
+MOTUS_DEF motus_real motus_vec3_length(motus_vec3 v) { return MOTUS_SQRT(motus_vec3_dot(v, v)); }
+MOTUS_DEF motus_vec3 motus_vec3_lerp(motus_vec3 a, motus_vec3 b, motus_real t) {
+    return motus_v3(a.x + MOTUS__ROUND((b.x - a.x) * t), a.y + MOTUS__ROUND((b.y - a.y) * t),
+                    a.z + MOTUS__ROUND((b.z - a.z) * t));
+}
 
-/* True unless x is NaN or +-Inf. Reads the exponent bits instead of calling isfinite() so that the check
-   survives -ffast-math, under which compilers assume NaN never happens and fold isfinite() to 1. C reads the
-   bits through a union (defined behaviour since C99 TC3); C++ forbids that and gets memcpy, which compilers
-   turn into a register move. */
-MOTUS__INLINE motus__bits motus__real_bits(motus_real x) {
+/* True unless x is NaN or +-Inf. Reads the exponent bits, so that the check survives -ffast-math (under
+   which isfinite() folds to 1). C reads the bits through a union; C++ through memcpy (a register move). */
+MOTUS_DEF motus__bits motus__real_bits(motus_real x) {
 #ifdef __cplusplus
     motus__bits bits;
     memcpy(&bits, &x, sizeof bits);
@@ -308,42 +559,146 @@ MOTUS__INLINE motus__bits motus__real_bits(motus_real x) {
     return pun.bits;
 #endif
 }
-MOTUS_API int motus_real_is_finite(motus_real x) {
+MOTUS_DEF int motus_real_is_finite(motus_real x) {
     return (motus__real_bits(x) & MOTUS__EXPONENT_MASK) != MOTUS__EXPONENT_MASK;
 }
-/* Bit tests that a loop can OR up without a compare per value:
-   - the top bit of motus__not_finite_bits(x) is set iff x is NaN or +-Inf: the magnitude bits plus one unit
-     of exponent carry into the sign position exactly when the exponent is all ones;
-   - motus__negative_bits(x) is 1 iff x < 0 or x is a NaN with the sign bit (-0 is not negative). */
-#define MOTUS__SIGN_BIT (~(MOTUS__EXPONENT_MASK | (MOTUS__EXPONENT_MASK >> 1)) & (MOTUS__EXPONENT_MASK << 1))
-MOTUS__INLINE motus__bits motus__not_finite_bits(motus_real x) {
-    return (motus__real_bits(x) & (motus__bits)~MOTUS__SIGN_BIT) + (MOTUS__EXPONENT_MASK & (motus__bits)~(MOTUS__EXPONENT_MASK << 1));
+MOTUS_DEF int motus_vec2_is_finite(motus_vec2 v) { return motus_real_is_finite(v.x) & motus_real_is_finite(v.y); }
+MOTUS_DEF int motus_vec3_is_finite(motus_vec3 v) {
+    return motus_real_is_finite(v.x) & motus_real_is_finite(v.y) & motus_real_is_finite(v.z);
 }
-MOTUS__INLINE int motus__negative_bits(motus_real x) { return motus__real_bits(x) > MOTUS__SIGN_BIT; }
-MOTUS_API int motus_vec2_is_finite(motus_vec2 v) { return motus_real_is_finite(v.x) && motus_real_is_finite(v.y); }
+/* x > 0 and finite; dt >= 0 and finite (a -0 dt is a step of nothing, as +0). */
+MOTUS_DEF int motus__positive_finite(motus_real x) { return motus_real_is_finite(x) && x > 0; }
+MOTUS_DEF int motus__dt_valid(motus_real dt) { return motus_real_is_finite(dt) && dt >= 0; }
+MOTUS_DEF int motus__fraction_valid(motus_real x) { return x >= 0 && x <= 1; } /* NaN fails */
 
-/* =================================================================================================
-   Particle: create, forces, the textbook step, damping
-   ================================================================================================= */
+/* ---- particles: written once on motus_vec3; the 2D functions run them with z = 0 ---- */
+MOTUS_DEF motus_vec3 motus__v3_of(motus_vec2 v) { return motus_v3(v.x, v.y, 0); }
+MOTUS_DEF motus_vec2 motus__v2_of(motus_vec3 v) { return motus_v2(v.x, v.y); }
 
-/* A particle at rest at `position` with no force. `mass` must be finite and > 0 (and large enough that
-   1/mass is finite). For a particle that nothing moves, use motus_particle_init_immovable. */
-MOTUS_API motus_result motus_particle_init(motus_particle *particle, motus_vec2 position, motus_real mass) {
-    motus_real inverse_mass;
-    if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    if (!motus_vec2_is_finite(position) || !motus_real_is_finite(mass)) return MOTUS_ERROR_NOT_FINITE;
+MOTUS_DEF motus_result motus__init(motus_vec3 position, motus_real mass, motus_real *inverse_mass) {
+    if (!motus_vec3_is_finite(position) || !motus_real_is_finite(mass)) return MOTUS_ERROR_NOT_FINITE;
     if (!(mass > 0)) return MOTUS_ERROR_INVALID_MASS;
-    inverse_mass = MOTUS_R(1.0) / mass;
-    if (!motus_real_is_finite(inverse_mass)) return MOTUS_ERROR_INVALID_MASS;
+    *inverse_mass = MOTUS_R(1.0) / mass;
+    return motus_real_is_finite(*inverse_mass) ? MOTUS_OK : MOTUS_ERROR_INVALID_MASS;
+}
+MOTUS_DEF motus_result motus__check(motus_vec3 position, motus_vec3 velocity, motus_vec3 force, motus_real inverse_mass) {
+    if (!(motus_vec3_is_finite(position) & motus_vec3_is_finite(velocity) & motus_vec3_is_finite(force) &
+          motus_real_is_finite(inverse_mass)))
+        return MOTUS_ERROR_NOT_FINITE;
+    return inverse_mass < 0 ? MOTUS_ERROR_INVALID_MASS : MOTUS_OK;
+}
+/* Semi-implicit Euler, the step the textbook teaches:
+       v(t+dt) = v(t) + F*(1/m)*dt;   x(t+dt) = x(t) + v(t+dt)*dt      <- the new velocity
+   First order: under a constant acceleration a it lands at x0 + v0*t + a*t*(t + dt)/2 after time t. It
+   keeps the energy of an orbit or a spring bounded; a spring of stiffness k is stable while dt < 2*sqrt(m/k).
+   Writes *velocity and *position only if both come out finite. */
+MOTUS_DEF motus_result motus__step(motus_vec3 *position, motus_vec3 *velocity, motus_vec3 force,
+                                   motus_real inverse_mass, motus_real dt) {
+    motus_vec3 v, x;
+    if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    if (inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
+    /* (F*(1/m))*dt, in the engine's order, so the two agree bit for bit. */
+    v.x = velocity->x + MOTUS__ROUND(MOTUS__ROUND(force.x * inverse_mass) * dt);
+    v.y = velocity->y + MOTUS__ROUND(MOTUS__ROUND(force.y * inverse_mass) * dt);
+    v.z = velocity->z + MOTUS__ROUND(MOTUS__ROUND(force.z * inverse_mass) * dt);
+    if (inverse_mass == 0) v = *velocity; /* immovable: forces do not change its velocity */
+    x.x = position->x + MOTUS__ROUND(v.x * dt);
+    x.y = position->y + MOTUS__ROUND(v.y * dt);
+    x.z = position->z + MOTUS__ROUND(v.z * dt);
+    if (!(motus_vec3_is_finite(v) & motus_vec3_is_finite(x))) {
+        motus_result state = motus__check(*position, *velocity, force, inverse_mass);
+        return state != MOTUS_OK ? state : MOTUS_ERROR_OVERFLOW;
+    }
+    if (dt == 0) return MOTUS_OK; /* a step of nothing: the state stays bit for bit (-0 included) */
+    *velocity = v;
+    *position = x;
+    return MOTUS_OK;
+}
+/* Kahan-compensated position update for far from the origin in float: the carry keeps what each update
+   rounded away (Knuth's TwoSum, exact) and adds it back next step. The velocity is motus__step's. */
+MOTUS_DEF motus_result motus__step_compensated(motus_vec3 *position, motus_vec3 *velocity, motus_vec3 force,
+                                               motus_real inverse_mass, motus_vec3 *carry, motus_real dt) {
+    motus_vec3 x = *position, v = *velocity, delta, sum, back, error;
+    motus_result result;
+    if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    if (!motus_vec3_is_finite(*carry)) return MOTUS_ERROR_NOT_FINITE;
+    result = motus__step(&x, &v, force, inverse_mass, dt);
+    if (result != MOTUS_OK || dt == 0) return result;
+    delta = motus_v3(MOTUS__ROUND(v.x * dt) + carry->x, MOTUS__ROUND(v.y * dt) + carry->y,
+                     MOTUS__ROUND(v.z * dt) + carry->z);
+    sum = motus_vec3_add(*position, delta);
+    back = motus_vec3_sub(sum, *position);
+    error = motus_vec3_add(motus_vec3_sub(*position, motus_vec3_sub(sum, back)), motus_vec3_sub(delta, back));
+    if (!motus_vec3_is_finite(sum)) return MOTUS_ERROR_OVERFLOW;
+    *velocity = v;
+    *position = sum;
+    *carry = error;
+    return MOTUS_OK;
+}
+/* v*kept, each component below MOTUS_REST_SPEED set to a zero of its sign (subnormals are slow). */
+MOTUS_DEF motus_real motus__damp(motus_real v, motus_real kept) {
+    const motus_real rest = (motus_real)(MOTUS_REST_SPEED);
+    v = v * kept;
+    return (v < rest && v > -rest) ? v * 0 : v;
+}
+MOTUS_DEF motus_result motus__damp3(motus_vec3 *velocity, motus_real inverse_mass, motus_real kept) {
+    if (!motus_vec3_is_finite(*velocity)) return MOTUS_ERROR_NOT_FINITE;
+    if (inverse_mass == 0) return MOTUS_OK; /* immovable: damping does not act on it */
+    velocity->x = motus__damp(velocity->x, kept);
+    velocity->y = motus__damp(velocity->y, kept);
+    velocity->z = motus__damp(velocity->z, kept);
+    return MOTUS_OK;
+}
+/* The kept factor of damping_per_second over dt: (1 - d)^dt. */
+MOTUS_DEF motus_real motus__kept_per_second(motus_real damping_per_second, motus_real dt) {
+    return damping_per_second == 0 ? MOTUS_R(1.0) : MOTUS_POW(MOTUS_R(1.0) - damping_per_second, dt);
+}
+/* One wall pair: past a wall the position is mirrored back inside and that velocity component multiplied
+   by -restitution; one that overshot by more than the box is clamped to the wall. */
+MOTUS_DEF void motus__bounce1(motus_real *x, motus_real *v, motus_real lo, motus_real hi, motus_real bounce) {
+    if (*x < lo) {
+        *x = lo + (lo - *x);
+        *v = *v * bounce;
+    }
+    if (*x > hi) {
+        *x = hi - (*x - hi);
+        *v = *v * bounce;
+    }
+    if (*x < lo) *x = lo;
+    if (*x > hi) *x = hi;
+}
+MOTUS_DEF motus_result motus__bounce(motus_vec3 *x, motus_vec3 *v, motus_vec3 lo, motus_vec3 hi, motus_real restitution) {
+    motus_vec3 nx = *x, nv = *v;
+    if (!motus_real_is_finite(restitution) || !motus_vec3_is_finite(*x) || !motus_vec3_is_finite(*v))
+        return MOTUS_ERROR_NOT_FINITE;
+    if (lo.x != lo.x || lo.y != lo.y || lo.z != lo.z || hi.x != hi.x || hi.y != hi.y || hi.z != hi.z)
+        return MOTUS_ERROR_NOT_FINITE; /* NaN walls; infinite ones mean no wall */
+    if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z)) return MOTUS_ERROR_INVALID_BOUNDS;
+    if (!motus__fraction_valid(restitution)) return MOTUS_ERROR_INVALID_RESTITUTION;
+    motus__bounce1(&nx.x, &nv.x, lo.x, hi.x, -restitution);
+    motus__bounce1(&nx.y, &nv.y, lo.y, hi.y, -restitution);
+    motus__bounce1(&nx.z, &nv.z, lo.z, hi.z, -restitution);
+    *x = nx;
+    *v = nv;
+    return MOTUS_OK;
+}
+
+/* ---- the 2D particle functions ---- */
+/* A particle at rest at `position` with no force; mass finite and > 0 with 1/mass finite. */
+MOTUS_DEF motus_result motus_particle_init(motus_particle *particle, motus_vec2 position, motus_real mass) {
+    motus_real inverse_mass = 0;
+    motus_result result;
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    result = motus__init(motus__v3_of(position), mass, &inverse_mass);
+    if (result != MOTUS_OK) return result;
     particle->position = position;
     particle->velocity = motus_v2(0, 0);
     particle->force = motus_v2(0, 0);
     particle->inverse_mass = inverse_mass;
     return MOTUS_OK;
 }
-
-/* A particle with inverse mass 0: forces add up in `force` but never change its velocity or position. */
-MOTUS_API motus_result motus_particle_init_immovable(motus_particle *particle, motus_vec2 position) {
+/* Inverse mass 0: forces, drag and damping never change its velocity (see >>conventions). */
+MOTUS_DEF motus_result motus_particle_init_immovable(motus_particle *particle, motus_vec2 position) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     if (!motus_vec2_is_finite(position)) return MOTUS_ERROR_NOT_FINITE;
     particle->position = position;
@@ -352,1132 +707,450 @@ MOTUS_API motus_result motus_particle_init_immovable(motus_particle *particle, m
     particle->inverse_mass = 0;
     return MOTUS_OK;
 }
-
-/* The mass the particle was made with (rounded through 1/(1/m)); +Inf for an immovable particle, NaN for
-   a NULL particle. */
-MOTUS_API motus_real motus_particle_mass(const motus_particle *particle) {
+MOTUS_DEF motus_real motus_particle_mass(const motus_particle *particle) {
     if (!particle) return (motus_real)NAN;
-    if (particle->inverse_mass == 0) return (motus_real)HUGE_VAL;
-    return MOTUS_R(1.0) / particle->inverse_mass;
+    return particle->inverse_mass == 0 ? (motus_real)HUGE_VAL : MOTUS_R(1.0) / particle->inverse_mass;
 }
-
-/* MOTUS_OK if every field is finite and the inverse mass is >= 0. Use it on particles you filled by hand. */
-MOTUS_API motus_result motus_particle_check(const motus_particle *particle) {
+MOTUS_DEF motus_result motus_particle_check(const motus_particle *particle) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    if (!motus_vec2_is_finite(particle->position) || !motus_vec2_is_finite(particle->velocity) ||
-        !motus_vec2_is_finite(particle->force) || !motus_real_is_finite(particle->inverse_mass))
-        return MOTUS_ERROR_NOT_FINITE;
-    if (particle->inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
-    return MOTUS_OK;
+    return motus__check(motus__v3_of(particle->position), motus__v3_of(particle->velocity),
+                        motus__v3_of(particle->force), particle->inverse_mass);
 }
-
-/* Adds `force` to the accumulator. Rejects a non-finite force, and a sum that would overflow. */
-MOTUS_API motus_result motus_particle_add_force(motus_particle *particle, motus_vec2 force) {
+/* Adds `force` to the accumulator; rejects a non-finite force and a sum that would overflow. */
+MOTUS_DEF motus_result motus_particle_add_force(motus_particle *particle, motus_vec2 force) {
     motus_vec2 sum;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    if (!motus_vec2_is_finite(force) || !motus_vec2_is_finite(particle->force)) return MOTUS_ERROR_NOT_FINITE;
+    if (!(motus_vec2_is_finite(force) & motus_vec2_is_finite(particle->force))) return MOTUS_ERROR_NOT_FINITE;
     sum = motus_vec2_add(particle->force, force);
     if (!motus_vec2_is_finite(sum)) return MOTUS_ERROR_OVERFLOW;
     particle->force = sum;
     return MOTUS_OK;
 }
-
-MOTUS_API motus_result motus_particle_clear_forces(motus_particle *particle) {
+MOTUS_DEF motus_result motus_particle_clear_forces(motus_particle *particle) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     particle->force = motus_v2(0, 0);
     return MOTUS_OK;
 }
-
-MOTUS_API int motus__is_positive_finite(motus_real x) { return motus_real_is_finite(x) && x > 0; }
-
-/* Every stepper ends here: store the new state only if it is finite. Otherwise nothing is written, and the
-   result says whether the particle came in broken (NaN/Inf in a field) or the step itself overflowed. */
-MOTUS_API motus_result motus__commit_step(motus_particle *particle, motus_vec2 velocity, motus_vec2 position) {
-    motus_result state;
-    if (!motus_vec2_is_finite(velocity) || !motus_vec2_is_finite(position)) {
-        state = motus_particle_check(particle);
-        return state != MOTUS_OK ? state : MOTUS_ERROR_OVERFLOW;
+/* Semi-implicit Euler with the accumulated force (see motus__step). Does not clear the force. */
+MOTUS_DEF motus_result motus_particle_step(motus_particle *particle, motus_real dt) {
+    motus_vec3 x, v;
+    motus_result result;
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    x = motus__v3_of(particle->position);
+    v = motus__v3_of(particle->velocity);
+    result = motus__step(&x, &v, motus__v3_of(particle->force), particle->inverse_mass, dt);
+    if (result == MOTUS_OK && dt != 0) {
+        particle->position = motus__v2_of(x);
+        particle->velocity = motus__v2_of(v);
     }
-    particle->velocity = velocity;
-    particle->position = position;
-    return MOTUS_OK;
+    return result;
 }
-
-/* Semi-implicit (symplectic) Euler, the step the textbook teaches:
-       v(t+dt) = v(t) + F * (1/m) * dt
-       x(t+dt) = x(t) + v(t+dt) * dt        <- the *new* velocity: that is what makes it semi-implicit
-   First order: under a constant acceleration a it lands at x0 + v0*t + a*t*(t + dt)/2 after time t, ahead
-   of the exact x0 + v0*t + a*t^2/2 by a*dt*t/2. Unlike explicit Euler it keeps the energy of an orbit or a
-   spring bounded; a spring of stiffness k stays stable while dt < 2*sqrt(m/k).
-   Does not clear the force accumulator. */
-MOTUS_API motus_result motus_particle_step(motus_particle *particle, motus_real dt) {
-    motus_vec2 velocity, position;
-    if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
-    if (particle->inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
-    /* (F * 1/m) * dt, in this order, as the stepper's semi-implicit Euler does: the two agree bit for bit. */
-    velocity = motus_vec2_add(particle->velocity, motus_vec2_scale(motus_vec2_scale(particle->force, particle->inverse_mass), dt));
-    position = motus_vec2_add(particle->position, motus_vec2_scale(velocity, dt));
-    return motus__commit_step(particle, velocity, position);
-}
-
-MOTUS_API int motus__damping_is_valid(motus_real factor) { return factor >= 0 && factor <= 1; } /* NaN fails */
-
-/* A damped velocity: v*factor, each component below MOTUS_REST_SPEED in magnitude set to a zero of its sign
-   so that it never lingers among the subnormals (see SUBNORMALS at the top). The batch kernels do the same
-   lane by lane. */
-MOTUS_API motus_vec2 motus__damp(motus_vec2 velocity, motus_real factor) {
-    const motus_real rest = (motus_real)(MOTUS_REST_SPEED);
-    motus_vec2 v = motus_vec2_scale(velocity, factor);
-    if (v.x < rest && v.x > -rest) v.x = v.x * 0;
-    if (v.y < rest && v.y > -rest) v.y = v.y * 0;
-    return v;
-}
-
-/* v *= factor_per_step, as the reference program does with 0.99 each frame. Frame-rate dependent: see
-   DAMPING at the top. factor_per_step must be in [0, 1]: 1 keeps all speed, 0 stops the particle; above 1,
-   negative or NaN is MOTUS_ERROR_INVALID_DAMPING (damping that adds energy or flips the velocity is not
-   damping). Speeds below MOTUS_REST_SPEED become 0 (see SUBNORMALS). */
-MOTUS_API motus_result motus_particle_damp_per_step(motus_particle *particle, motus_real factor_per_step) {
-    if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    if (!motus__damping_is_valid(factor_per_step)) return MOTUS_ERROR_INVALID_DAMPING;
-    if (!motus_vec2_is_finite(particle->velocity)) return MOTUS_ERROR_NOT_FINITE;
-    particle->velocity = motus__damp(particle->velocity, factor_per_step);
-    return MOTUS_OK;
-}
-
-/* v *= retained_per_second^dt: after one second of steps the speed is retained_per_second times what it
-   was, whatever dt was. retained_per_second must be in [0, 1] (0 stops the particle at any dt, 1 keeps all
-   speed; the rest is MOTUS_ERROR_INVALID_DAMPING, as for damp_per_step). Equivalent to linear drag with
-   rate k = -ln(retained_per_second) applied to the velocity alone. Speeds below MOTUS_REST_SPEED become 0. */
-MOTUS_API motus_result motus_particle_damp_per_second(motus_particle *particle, motus_real retained_per_second,
-                                                      motus_real dt) {
-    if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
-    if (!motus__damping_is_valid(retained_per_second)) return MOTUS_ERROR_INVALID_DAMPING;
-    if (!motus_vec2_is_finite(particle->velocity)) return MOTUS_ERROR_NOT_FINITE;
-    particle->velocity = motus__damp(particle->velocity, MOTUS_POW(retained_per_second, dt));
-    return MOTUS_OK;
-}
-
-/* Keeps a particle inside the box [min, max]: past a wall its position is mirrored back inside and that
-   velocity component is multiplied by -restitution (in [0, 1]; 1 keeps all speed); a particle that
-   overshot by more than the box is then clamped to the wall. The batch kernels'
-   bounds do the same, in the same order (after the step and the damping). */
-MOTUS_API motus_result motus_particle_bounce(motus_particle *particle, motus_vec2 min, motus_vec2 max,
-                                             motus_real restitution) {
-    motus_real *position, *velocity;
-    const motus_real lo[2] = {min.x, min.y}, hi[2] = {max.x, max.y};
-    int d;
-    if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    if (!motus_vec2_is_finite(min) || !motus_vec2_is_finite(max) || !motus_real_is_finite(restitution) ||
-        !motus_vec2_is_finite(particle->position) || !motus_vec2_is_finite(particle->velocity))
-        return MOTUS_ERROR_NOT_FINITE;
-    if (!(min.x <= max.x) || !(min.y <= max.y)) return MOTUS_ERROR_INVALID_SCENE;
-    if (!motus__damping_is_valid(restitution)) return MOTUS_ERROR_INVALID_DAMPING;
-    for (d = 0; d < 2; ++d) {
-        position = d == 0 ? &particle->position.x : &particle->position.y;
-        velocity = d == 0 ? &particle->velocity.x : &particle->velocity.y;
-        if (*position < lo[d]) {
-            *position = lo[d] + (lo[d] - *position);
-            *velocity = *velocity * -restitution;
-        }
-        if (*position > hi[d]) {
-            *position = hi[d] - (*position - hi[d]);
-            *velocity = *velocity * -restitution;
-        }
-        /* A particle that overshot by more than the box's width is still outside after one mirror. */
-        if (*position < lo[d]) *position = lo[d];
-        if (*position > hi[d]) *position = hi[d];
-    }
-    return MOTUS_OK;
-}
-
-/* The per-second fraction that a per-step factor amounts to at a fixed rate: factor^steps_per_second.
-   motus_damping_per_second_from_per_step(0.99, 60) = 0.547. Returns NaN for arguments out of range. */
-MOTUS_API motus_real motus_damping_per_second_from_per_step(motus_real factor_per_step, motus_real steps_per_second) {
-    if (!motus__damping_is_valid(factor_per_step) || !motus__is_positive_finite(steps_per_second))
-        return (motus_real)NAN;
-    return MOTUS_POW(factor_per_step, steps_per_second);
-}
-
-/* The exact solution over one step of m*dv/dt = F - m*k*v, with F (the accumulator) held constant and
-   drag rate k >= 0 (per second; k = -ln(retained_per_second)). With u = k*dt and a = F/m:
-       v(dt) = v0*e^-u + a*dt*phi1(u)             phi1(u) = (1 - e^-u)/u
-       x(dt) = x0 + v0*dt*phi1(u) + a*dt^2*phi2(u) phi2(u) = (u - 1 + e^-u)/u^2
-   Exact at any dt, so the motion does not depend on the frame rate (only rounding does). k = 0 gives the
-   exact constant-acceleration step x0 + v0*dt + a*dt^2/2. phi1 and phi2 lose digits to cancellation for
-   small u, so there they come from their Taylor series. */
-MOTUS_API void motus__drag_phi(motus_real u, motus_real *phi1, motus_real *phi2) {
-    if (u < MOTUS_R(0.5)) {
-        /* phi1 = sum (-u)^n/(n+1)!, phi2 = sum (-u)^n/(n+2)!; 15 terms leave a remainder below double
-           rounding for u < 0.5. */
-        motus_real term1 = 1, term2 = MOTUS_R(0.5), sum1 = 1, sum2 = MOTUS_R(0.5);
-        int n;
-        for (n = 1; n <= 14; ++n) {
-            term1 *= -u / (motus_real)(n + 1);
-            term2 *= -u / (motus_real)(n + 2);
-            sum1 += term1;
-            sum2 += term2;
-        }
-        *phi1 = sum1;
-        *phi2 = sum2;
-    } else {
-        motus_real em1 = MOTUS_EXPM1(-u); /* e^-u - 1 without cancellation */
-        *phi1 = -em1 / u;
-        *phi2 = (u + em1) / (u * u);
-    }
-}
-
-MOTUS_API motus_result motus_particle_step_linear_drag(motus_particle *particle, motus_real drag_per_second,
-                                                       motus_real dt) {
-    motus_real u, decay, phi1, phi2;
-    motus_vec2 acceleration, velocity, position;
-    if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
-    if (!motus_real_is_finite(drag_per_second)) return MOTUS_ERROR_NOT_FINITE;
-    if (!(drag_per_second >= 0)) return MOTUS_ERROR_INVALID_DAMPING;
-    if (particle->inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
-    u = drag_per_second * dt;
-    motus__drag_phi(u, &phi1, &phi2);
-    decay = MOTUS_EXP(-u);
-    acceleration = motus_vec2_scale(particle->force, particle->inverse_mass);
-    velocity = motus_vec2_add(motus_vec2_scale(particle->velocity, decay), motus_vec2_scale(acceleration, dt * phi1));
-    position = motus_vec2_add(particle->position,
-                              motus_vec2_add(motus_vec2_scale(particle->velocity, dt * phi1),
-                                             motus_vec2_scale(acceleration, dt * dt * phi2)));
-    return motus__commit_step(particle, velocity, position);
-}
-
-/* Far from the origin a float position has few digits left for the motion: at x = 1e6 m one ulp is
-   0.0625 m, so a step of 1 m/s * 1/60 s (0.017 m, under half an ulp) rounds away and the particle never
-   moves. Two remedies: the double build (MOTUS_DOUBLE; ulp 1.2e-10 m at 1e6 m), or this step, which keeps
-   what each position update rounded away in a carry the caller holds (one per particle, {0, 0} to start)
-   and adds it back on the next step, so that small steps accumulate (Kahan's compensated summation, with
-   Knuth's TwoSum for the exact rounding error of x + dx, any magnitudes):
-       dx = v_new*dt + carry;  x' = fl(x + dx);  carry' = (x + dx) - x'   (exact: TwoSum)
-   x + carry is then the position to about float precision squared; the stored position is within half
-   an ulp of it. The velocity is motus_particle_step's, bit for bit; with carry {0, 0} the first position
-   is too. Reset the carry to {0, 0} when the game moves the particle by hand. Needs IEEE arithmetic as
-   written: -ffast-math may reassociate TwoSum into carry = 0. On any error neither the particle nor the
-   carry is written. */
-MOTUS_API motus_result motus_particle_step_compensated(motus_particle *particle, motus_vec2 *carry, motus_real dt) {
-    motus_vec2 velocity, delta, sum, back, error;
+/* motus_particle_step that keeps, in *carry ({0, 0} to start), what the position update rounded away, so
+   that small steps far from the origin still add up (float at x = 1e6 m has an ulp of 0.0625 m). */
+MOTUS_DEF motus_result motus_particle_step_compensated(motus_particle *particle, motus_vec2 *carry, motus_real dt) {
+    motus_vec3 x, v, c;
     motus_result result;
     if (!particle || !carry) return MOTUS_ERROR_NULL_POINTER;
-    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
-    if (particle->inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
-    if (!motus_vec2_is_finite(*carry)) return MOTUS_ERROR_NOT_FINITE;
-    velocity = motus_vec2_add(particle->velocity, motus_vec2_scale(motus_vec2_scale(particle->force, particle->inverse_mass), dt));
-    delta = motus_vec2_add(motus_vec2_scale(velocity, dt), *carry);
-    sum = motus_vec2_add(particle->position, delta);
-    back = motus_vec2_sub(sum, particle->position);                             /* the part of delta that landed */
-    error = motus_vec2_add(motus_vec2_sub(particle->position, motus_vec2_sub(sum, back)), /* TwoSum */
-                           motus_vec2_sub(delta, back));
-    /* A finite sum of finite terms has a finite TwoSum error: checking velocity and sum covers the carry. */
-    result = motus__commit_step(particle, velocity, sum);
-    if (result == MOTUS_OK) *carry = error;
+    x = motus__v3_of(particle->position);
+    v = motus__v3_of(particle->velocity);
+    c = motus__v3_of(*carry);
+    result = motus__step_compensated(&x, &v, motus__v3_of(particle->force), particle->inverse_mass, &c, dt);
+    if (result == MOTUS_OK && dt != 0) {
+        particle->position = motus__v2_of(x);
+        particle->velocity = motus__v2_of(v);
+        *carry = motus__v2_of(c);
+    }
+    return result;
+}
+/* v *= 1 - damping: the fraction `damping` of the velocity is removed (0.01: the reference's v *= 0.99).
+   Frame-rate dependent; damp_per_second is not. damping in [0, 1]. */
+MOTUS_DEF motus_result motus_particle_damp_per_step(motus_particle *particle, motus_real damping) {
+    motus_vec3 v;
+    motus_result result;
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    if (!motus__fraction_valid(damping)) return MOTUS_ERROR_INVALID_DAMPING;
+    v = motus__v3_of(particle->velocity);
+    result = motus__damp3(&v, particle->inverse_mass, MOTUS_R(1.0) - damping);
+    if (result == MOTUS_OK) particle->velocity = motus__v2_of(v);
+    return result;
+}
+/* v *= (1 - damping_per_second)^dt: after one second of steps the fraction damping_per_second of the speed
+   is gone, whatever dt was. */
+MOTUS_DEF motus_result motus_particle_damp_per_second(motus_particle *particle, motus_real damping_per_second,
+                                                      motus_real dt) {
+    motus_vec3 v;
+    motus_result result;
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    if (!motus__fraction_valid(damping_per_second)) return MOTUS_ERROR_INVALID_DAMPING;
+    v = motus__v3_of(particle->velocity);
+    result = motus__damp3(&v, particle->inverse_mass, motus__kept_per_second(damping_per_second, dt));
+    if (result == MOTUS_OK) particle->velocity = motus__v2_of(v);
+    return result;
+}
+/* Keeps the particle inside [bounds_min, bounds_max] (an infinite bound is no wall), as the scene's bounds. */
+MOTUS_DEF motus_result motus_particle_bounce(motus_particle *particle, motus_vec2 bounds_min, motus_vec2 bounds_max,
+                                             motus_real restitution) {
+    motus_vec3 x, v;
+    motus_result result;
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    x = motus__v3_of(particle->position);
+    v = motus__v3_of(particle->velocity);
+    result = motus__bounce(&x, &v, motus__v3_of(bounds_min), motus__v3_of(bounds_max), restitution);
+    if (result == MOTUS_OK) {
+        particle->position = motus__v2_of(x);
+        particle->velocity = motus__v2_of(v);
+    }
     return result;
 }
 
-/* =================================================================================================
-   Forces: one model for every method
-   =================================================================================================
-   A method that takes several stages evaluates the forces again at each stage, so every term is a function
-   of the state (positions, velocities, time). Each term is off while its field is zero, so a zeroed
-   motus_forces is "no forces". The particle's accumulated `force` is added at every stage as a force held
-   constant over the step (a key held for the frame). Immovable particles (inverse mass 0) get no
-   acceleration from any term. */
-
-typedef struct motus_spring {
-    int a;                  /* index of one end */
-    int b;                  /* index of the other end, or -1: a spring from particle a to `anchor` */
-    motus_vec2 anchor;      /* the fixed end when b == -1 */
-    motus_real rest_length; /* m */
-    motus_real stiffness;   /* k, N/m: Hooke's F = -k*(|d| - rest_length)*d/|d| */
-    motus_real damping;     /* c, N*s/m, on the rate of stretch: F -= c*((v_a - v_b).d/|d|)*d/|d| */
-} motus_spring;
-
-/* Adds forces (newtons) to forces[0..count) for the state given; called at every stage of a step with the
-   stage's positions, velocities and time. It must not keep the pointers. */
-typedef void (*motus_force_callback)(void *user_data, int count, const motus_vec2 *positions,
-                                     const motus_vec2 *velocities, motus_real time, motus_vec2 *forces);
-
-typedef struct motus_forces {
-    motus_vec2 gravity;            /* uniform acceleration, m/s^2 (e.g. {0, 9.81} with y down) */
-    motus_real linear_drag;        /* k >= 0, 1/s: a -= k*v */
-    motus_real quadratic_drag;     /* c >= 0, 1/m: a -= c*|v|*v */
-    motus_real attractor_strength; /* mu = G*M >= 0, m^3/s^2: a -= mu*r/|r|^3, r from attractor_position */
-    motus_vec2 attractor_position;
-    const motus_spring *springs; /* spring_count springs, or NULL */
-    int spring_count;
-    motus_force_callback callback; /* or NULL */
-    void *user_data;               /* handed to callback */
-} motus_forces;
-
-/* One spring's fields, for a loop over many: every step runs it, so it is bit operations with no branch or
-   compare per field. Sets the sign bit of *not_finite if a field is NaN or Inf, and *out_of_range if an end
-   is outside [0, count) (b may be -1) or both ends are one particle, or a parameter is negative (a NaN's
-   sign does not matter: not finite is reported first). count >= 0. */
-MOTUS__INLINE void motus__spring_check(const motus_spring *s, int count, motus__bits *not_finite, int *out_of_range) {
-    *not_finite |= motus__not_finite_bits(s->anchor.x) | motus__not_finite_bits(s->anchor.y) |
-                   motus__not_finite_bits(s->rest_length) | motus__not_finite_bits(s->stiffness) |
-                   motus__not_finite_bits(s->damping);
-    *out_of_range |= ((unsigned)s->a >= (unsigned)count) | ((unsigned)s->b + 1u > (unsigned)count) | (s->b == s->a) |
-                     motus__negative_bits(s->rest_length) | motus__negative_bits(s->stiffness) |
-                     motus__negative_bits(s->damping);
+/* ---- the 3D particle functions: the same, on motus_vec3 ---- */
+MOTUS_DEF motus_result motus_particle3_init(motus_particle3 *particle, motus_vec3 position, motus_real mass) {
+    motus_real inverse_mass = 0;
+    motus_result result;
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    result = motus__init(position, mass, &inverse_mass);
+    if (result != MOTUS_OK) return result;
+    particle->position = position;
+    particle->velocity = particle->force = motus_v3(0, 0, 0);
+    particle->inverse_mass = inverse_mass;
+    return MOTUS_OK;
+}
+MOTUS_DEF motus_result motus_particle3_init_immovable(motus_particle3 *particle, motus_vec3 position) {
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    if (!motus_vec3_is_finite(position)) return MOTUS_ERROR_NOT_FINITE;
+    particle->position = position;
+    particle->velocity = particle->force = motus_v3(0, 0, 0);
+    particle->inverse_mass = 0;
+    return MOTUS_OK;
+}
+MOTUS_DEF motus_real motus_particle3_mass(const motus_particle3 *particle) {
+    if (!particle) return (motus_real)NAN;
+    return particle->inverse_mass == 0 ? (motus_real)HUGE_VAL : MOTUS_R(1.0) / particle->inverse_mass;
+}
+MOTUS_DEF motus_result motus_particle3_check(const motus_particle3 *particle) {
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    return motus__check(particle->position, particle->velocity, particle->force, particle->inverse_mass);
+}
+MOTUS_DEF motus_result motus_particle3_add_force(motus_particle3 *particle, motus_vec3 force) {
+    motus_vec3 sum;
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    if (!(motus_vec3_is_finite(force) & motus_vec3_is_finite(particle->force))) return MOTUS_ERROR_NOT_FINITE;
+    sum = motus_vec3_add(particle->force, force);
+    if (!motus_vec3_is_finite(sum)) return MOTUS_ERROR_OVERFLOW;
+    particle->force = sum;
+    return MOTUS_OK;
+}
+MOTUS_DEF motus_result motus_particle3_clear_forces(motus_particle3 *particle) {
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    particle->force = motus_v3(0, 0, 0);
+    return MOTUS_OK;
+}
+MOTUS_DEF motus_result motus_particle3_step(motus_particle3 *particle, motus_real dt) {
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    return motus__step(&particle->position, &particle->velocity, particle->force, particle->inverse_mass, dt);
+}
+MOTUS_DEF motus_result motus_particle3_step_compensated(motus_particle3 *particle, motus_vec3 *carry, motus_real dt) {
+    if (!particle || !carry) return MOTUS_ERROR_NULL_POINTER;
+    return motus__step_compensated(&particle->position, &particle->velocity, particle->force, particle->inverse_mass,
+                                   carry, dt);
+}
+MOTUS_DEF motus_result motus_particle3_damp_per_step(motus_particle3 *particle, motus_real damping) {
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    if (!motus__fraction_valid(damping)) return MOTUS_ERROR_INVALID_DAMPING;
+    return motus__damp3(&particle->velocity, particle->inverse_mass, MOTUS_R(1.0) - damping);
+}
+MOTUS_DEF motus_result motus_particle3_damp_per_second(motus_particle3 *particle, motus_real damping_per_second,
+                                                       motus_real dt) {
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    if (!motus__fraction_valid(damping_per_second)) return MOTUS_ERROR_INVALID_DAMPING;
+    return motus__damp3(&particle->velocity, particle->inverse_mass, motus__kept_per_second(damping_per_second, dt));
+}
+MOTUS_DEF motus_result motus_particle3_bounce(motus_particle3 *particle, motus_vec3 bounds_min, motus_vec3 bounds_max,
+                                              motus_real restitution) {
+    if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    return motus__bounce(&particle->position, &particle->velocity, bounds_min, bounds_max, restitution);
 }
 
-/* MOTUS_OK if the model can be used with `count` particles: finite fields, non-negative drags, stiffness,
-   damping, rest lengths and attractor strength, spring ends in [0, count) (b may be -1). count < 0 is
-   MOTUS_ERROR_INVALID_COUNT, as in motus_stepper_step. */
-MOTUS_API motus_result motus_forces_check(const motus_forces *forces, int count) {
-    motus__bits not_finite = 0;
-    int i, out_of_range = 0;
-    if (!forces) return MOTUS_ERROR_NULL_POINTER;
-    if (count < 0) return MOTUS_ERROR_INVALID_COUNT;
-    if (!motus_vec2_is_finite(forces->gravity) || !motus_real_is_finite(forces->linear_drag) ||
-        !motus_real_is_finite(forces->quadratic_drag) || !motus_real_is_finite(forces->attractor_strength) ||
-        !motus_vec2_is_finite(forces->attractor_position))
-        return MOTUS_ERROR_NOT_FINITE;
-    if (forces->linear_drag < 0 || forces->quadratic_drag < 0 || forces->attractor_strength < 0 ||
-        forces->spring_count < 0 || (forces->spring_count > 0 && !forces->springs))
-        return MOTUS_ERROR_INVALID_FORCES;
-    for (i = 0; i < forces->spring_count; ++i) motus__spring_check(&forces->springs[i], count, &not_finite, &out_of_range);
-    if (not_finite & MOTUS__SIGN_BIT) return MOTUS_ERROR_NOT_FINITE;
-    return out_of_range ? MOTUS_ERROR_INVALID_FORCES : MOTUS_OK;
+/* ---- states over arrays of particles: the engine reads your structs through a stride ---- */
+MOTUS_DEF motus_state motus_state_of_particles(motus_particle *particles, int count) {
+    motus_state s;
+    memset(&s, 0, sizeof s);
+    s.dimensions = 2;
+    s.count = particles ? count : 0;
+    s.stride = (int)(sizeof(motus_particle) / sizeof(motus_real));
+    if (!particles) return s;
+    s.position[0] = &particles->position.x;
+    s.position[1] = &particles->position.y;
+    s.velocity[0] = &particles->velocity.x;
+    s.velocity[1] = &particles->velocity.y;
+    s.force[0] = &particles->force.x;
+    s.force[1] = &particles->force.y;
+    s.inverse_mass = &particles->inverse_mass;
+    return s;
+}
+MOTUS_DEF motus_state motus_state_of_particles3(motus_particle3 *particles, int count) {
+    motus_state s;
+    memset(&s, 0, sizeof s);
+    s.dimensions = 3;
+    s.count = particles ? count : 0;
+    s.stride = (int)(sizeof(motus_particle3) / sizeof(motus_real));
+    if (!particles) return s;
+    s.position[0] = &particles->position.x;
+    s.position[1] = &particles->position.y;
+    s.position[2] = &particles->position.z;
+    s.velocity[0] = &particles->velocity.x;
+    s.velocity[1] = &particles->velocity.y;
+    s.velocity[2] = &particles->velocity.z;
+    s.force[0] = &particles->force.x;
+    s.force[1] = &particles->force.y;
+    s.force[2] = &particles->force.z;
+    s.inverse_mass = &particles->inverse_mass;
+    return s;
 }
 
-/* Nonzero if any component is NaN or infinite: bit operations only, so a loop can OR it up without a branch. */
-MOTUS__INLINE int motus__vec2_not_finite(motus_vec2 v) {
-    return (motus_real_is_finite(v.x) & motus_real_is_finite(v.y)) == 0;
+/* ---- methods ---- */
+MOTUS_DEF const char *motus_method_name(motus_method method) {
+#define MOTUS__ROW(name, text, order, evaluations, limit) text,
+    static const char *const names[MOTUS_METHOD_COUNT] = {MOTUS__METHODS(MOTUS__ROW)};
+#undef MOTUS__ROW
+    return (unsigned)method < MOTUS_METHOD_COUNT ? names[method] : NULL;
 }
-
-/* Hooke with damping, without a square root unless the rest length needs one:
-       F = -k*d + k*L*d/|d| - c*((v_a - v_b).d)/|d|^2 * d,     d = x_a - x_b
-   which is -k*(|d| - L)*d/|d| - c*(stretch rate)*d/|d| written so that the common zero-length spring
-   (and its damping) costs a multiply and a divide. */
-MOTUS__INLINE motus_vec2 motus__spring_force(const motus_spring *s, motus_vec2 d, motus_vec2 relative_velocity) {
-    motus_real d2 = motus_vec2_dot(d, d), along;
-    motus_vec2 f = motus_vec2_scale(d, -s->stiffness);
-    if (!(d2 > 0)) return f; /* both ends at one point: no direction to push along (or NaN: passed on) */
-    along = -s->damping * motus_vec2_dot(relative_velocity, d) / d2;
-    if (s->rest_length != 0) along += s->stiffness * s->rest_length / MOTUS_SQRT(d2);
-    return motus_vec2_add(f, motus_vec2_scale(d, along));
+MOTUS_DEF int motus_method_order(motus_method method) {
+#define MOTUS__ROW(name, text, order, evaluations, limit) order,
+    static const int orders[MOTUS_METHOD_COUNT] = {MOTUS__METHODS(MOTUS__ROW)};
+#undef MOTUS__ROW
+    return (unsigned)method < MOTUS_METHOD_COUNT ? orders[method] : -1;
 }
-
-/* One particle's acceleration from its summed force (newtons) and the per-particle terms. quadratic and
-   attractor are constants where it is inlined, so unused terms cost nothing; gravity and linear drag are
-   tested against zero, the same for every particle. An immovable particle gets 0 (or NaN if something it
-   was given is NaN, so that the step reports it instead of hiding it). */
-MOTUS__INLINE motus_vec2 motus__particle_acceleration(const motus_forces *f, motus_vec2 force, motus_real inverse_mass,
-                                                      motus_vec2 x, motus_vec2 v, int quadratic, int attractor) {
-    motus_vec2 a = motus_vec2_scale(force, inverse_mass);
-    /* Terms that are off are skipped, not added as zero: adding +0 would turn a -0 into +0, and the
-       batch kernels, which skip them, agree with this bit for bit. */
-    if (f->gravity.x != 0 || f->gravity.y != 0) a = motus_vec2_add(a, f->gravity);
-    if (f->linear_drag != 0) a = motus_vec2_sub(a, motus_vec2_scale(v, f->linear_drag));
-    if (quadratic) a = motus_vec2_sub(a, motus_vec2_scale(v, f->quadratic_drag * motus_vec2_length(v)));
-    if (attractor) {
-        motus_vec2 r = motus_vec2_sub(x, f->attractor_position);
-        motus_real r2 = motus_vec2_dot(r, r);
-        if (r2 > 0) a = motus_vec2_sub(a, motus_vec2_scale(r, f->attractor_strength / (r2 * MOTUS_SQRT(r2))));
-    }
-    return motus_vec2_scale(a, (motus_real)(inverse_mass != 0));
+MOTUS_DEF int motus_method_evaluations(motus_method method) {
+#define MOTUS__ROW(name, text, order, evaluations, limit) evaluations,
+    static const int counts[MOTUS_METHOD_COUNT] = {MOTUS__METHODS(MOTUS__ROW)};
+#undef MOTUS__ROW
+    return (unsigned)method < MOTUS_METHOD_COUNT ? counts[method] : -1;
 }
-
-/* Which of the costly per-particle terms are on: an index for the switches below. */
-MOTUS_API int motus__terms(const motus_forces *f) {
-    return (f->quadratic_drag != 0) | ((f->attractor_strength != 0) << 1);
-}
-
-/* Accelerations of every particle at the stage state (x, v, time). Springs and the callback couple
-   particles, so their forces are summed first over the whole array; the rest is one pass. */
-MOTUS_API void motus__accelerations(const motus_forces *forces, const motus_particle *particles, int count,
-                                    const motus_vec2 *x, const motus_vec2 *v, motus_real time,
-                                    motus_vec2 *acceleration) {
-    int i;
-    for (i = 0; i < count; ++i) acceleration[i] = particles[i].force;
-    for (i = 0; i < forces->spring_count; ++i) {
-        const motus_spring *s = &forces->springs[i];
-        int anchored = s->b < 0;
-        motus_vec2 d = motus_vec2_sub(x[s->a], anchored ? s->anchor : x[s->b]);
-        motus_vec2 relative_velocity = anchored ? v[s->a] : motus_vec2_sub(v[s->a], v[s->b]);
-        motus_vec2 f = motus__spring_force(s, d, relative_velocity);
-        acceleration[s->a] = motus_vec2_add(acceleration[s->a], f);
-        if (!anchored) acceleration[s->b] = motus_vec2_sub(acceleration[s->b], f);
-    }
-    if (forces->callback) forces->callback(forces->user_data, count, x, v, time, acceleration);
-#define MOTUS__ACCELERATE(quadratic, attractor)                                                                  \
-    for (i = 0; i < count; ++i)                                                                                \
-        acceleration[i] = motus__particle_acceleration(forces, acceleration[i], particles[i].inverse_mass, x[i], \
-                                                       v[i], quadratic, attractor);
-    switch (motus__terms(forces)) {
-    case 0: MOTUS__ACCELERATE(0, 0) break;
-    case 1: MOTUS__ACCELERATE(1, 0) break;
-    case 2: MOTUS__ACCELERATE(0, 1) break;
-    default: MOTUS__ACCELERATE(1, 1) break;
-    }
-#undef MOTUS__ACCELERATE
-}
-
-/* =================================================================================================
-   Integrators
-   =================================================================================================
-   All methods step a whole array of particles under one motus_forces through a motus_stepper, which owns
-   nothing: the caller gives it memory (motus_stepper_scratch_size) once, and a step allocates nothing.
-   A step is all or nothing: it computes the new state in that memory and writes it back only if every
-   value is finite.
-
-   h is the step, a(x, v, t) the acceleration the force model gives. "Evaluations" counts calls of the force
-   model per step. Stability limits are for an undamped spring x'' = -w^2 x (w = sqrt(k/m)).
-
-   method                 order  evals  symplectic  stable while   stores            velocity-dependent forces
-   SEMI_IMPLICIT_EULER      1      1       yes      w*h < 2        -                 a(x_n, v_n)
-     v += a(x, v)*h; x += v*h (new v). The textbook step and the default (method 0).
-   EXPLICIT_EULER           1      1       no       never (*)      -                 a(x_n, v_n)
-     x += v*h (old v); v += a*h. Energy grows every step: (*) the amplitude grows by sqrt(1 + (w*h)^2).
-   POSITION_VERLET          2      1       yes      w*h < 2        previous x        (x_n - x_{n-1})/h: 1st order
-     Stormer: x_{n+1} = 2x_n - x_{n-1} + a_n*h^2, in the time-corrected form for a step h after a step
-     h_p: x_{n+1} = x_n + (x_n - x_{n-1})*h/h_p + a_n*h*(h + h_p)/2, so a varying dt stays second order.
-     The stepper keeps each particle's last displacement x_n - x_{n-1} as it was added (re-forming it
-     from two positions would add a rounding error per step that grows with the run). If the game
-     moves particles or changes velocities by hand, call motus_stepper_reset. A particle without a
-     last displacement (after a reset, or new at the end of the array) starts from its velocity:
-     x_1 = x_0 + v_0*h + a_0*h^2/2. Reports
-     v_{n+1} = (x_{n+1} - x_n)/h + a_n*h/2. Forces that depend on velocity see (x_n - x_{n-1})/h, a
-     first-order velocity, so with drag the method is first order.
-   VELOCITY_VERLET          2      2 (1)   yes      w*h < 2        -                 predicted v + a*h
-     x += v*h + a*h^2/2; v += (a + a(x_new, v + a*h))*h/2.
-   LEAPFROG                 2      2 (1)   yes      w*h < 2        -                 predicted v + a*h
-     Kick-drift-kick: v += a*h/2; x += v*h; v += a(x_new)*h/2. The same map as velocity Verlet in exact
-     arithmetic (it is velocity Verlet written with the half-step velocity); the two differ only in
-     rounding. Time-reversible: flip the velocities, step as many times again, flip them back, and the
-     particles are where they started (up to rounding).
-   MIDPOINT                 2      2       no       never (**)     -                 at the stage
-     Explicit midpoint RK2: y_mid = y + f(y)*h/2; y += f(y_mid)*h. (**) Like explicit Euler it adds
-     energy to a spring every step, only less: the amplitude grows by sqrt(1 + (w*h)^4/4) per step.
-   RK4                      4      4       no       w*h < 2.83     -                 at each stage
-     Classic Runge-Kutta, stable while w*h < 2*sqrt(2). Energy drifts (a spring's decays) by O(h^4)
-     per unit time, so it is not bounded over long runs.
-   FOREST_RUTH              4      3       yes      w*h < 1.5734   -                 v at each kick: 1st order
-     Forest-Ruth (Yoshida's 4th-order triple jump of leapfrog), theta = 1/(2 - 2^(1/3)):
-     drift theta*h/2, kick theta*h, drift (1-theta)*h/2, kick (1-2*theta)*h, drift (1-theta)*h/2,
-     kick theta*h, drift theta*h/2. Symplectic and 4th order for forces of position only; a kick with a
-     velocity-dependent force is an explicit Euler step in v, which makes the whole method first order
-     (use RK4 or the exact stepper for drag). Its large negative middle step is why its stability
-     limit (1.5734) is lower than leapfrog's.
-   EXACT_LINEAR_DRAG        exact  0       -        no spring (***) -                exact (linear drag)
-     Solves v' = g + F/m - k*v over the step (see motus_particle_step_linear_drag). Only for gravity,
-     linear drag and the accumulated force; other terms give MOTUS_ERROR_UNSUPPORTED. (***) It takes no
-     spring, so it has no oscillator to lose; what it takes it solves exactly at any dt: its limit is +Inf.
-
-   STABILITY LIMITS. On x'' = -w^2 x every method's step is a linear map of (x, v/w) that depends on
-   z = w*h only; the amplitude does not grow while its eigenvalues stay on or inside the unit circle
-   (motus_method_stability_limit gives the z where that stops, measured in tests/stability.c):
-   - explicit Euler: (x, v/w) -> [[1, z], [-z, 1]] (x, v/w), a rotation times sqrt(1 + z^2): grows at any z > 0.
-   - midpoint: I + z*J + z^2*J^2/2 with J^2 = -I, a rotation times |1 + iz - z^2/2| = sqrt(1 + z^4/4) > 1.
-   - semi-implicit Euler, position Verlet, velocity Verlet, leapfrog: determinant 1, trace 2 - z^2, so the
-     eigenvalues stay on the unit circle while |2 - z^2| < 2: z < 2. At z = 2 a double eigenvalue -1 makes
-     the amplitude grow linearly, beyond it by (z^2 - 2 + z*sqrt(z^2 - 4))/2 per step.
-   - RK4: R(iz) = 1 - z^2/2 + z^4/24 + i*(z - z^3/6), |R|^2 = 1 - z^6/72 + z^8/576 <= 1 iff z <= 2*sqrt(2).
-   - Forest-Ruth: three leapfrog maps of theta*z, (1 - 2*theta)*z, theta*z; each has determinant 1, and
-     the product's trace is 2 - u + u^2/12 + c*u^3 (u = z^2, c = 0.1295084). The rotation per step peaks
-     at 0.977 rad (z = 1.185) and returns to 0 where the trace is back at 2: z^2 = (sqrt(1/144 + 4c) -
-     1/12)/(2c), z = 1.5734019. Beyond it an eigenvalue is real and > 1.
-   Damping shrinks the limits: a spring's damping c and the drags add a decay rate g to the oscillation,
-   which pushes the eigenvalues off the imaginary axis, where the methods' limits differ (on the real
-   axis, g*h < 2 for the Euler and Verlet family and midpoint, 2.7853 for RK4, 1.1682 for Forest-Ruth).
-   The stepper's limit therefore uses an effective frequency
-       w_eff = alpha*g/2 + sqrt((alpha*g/2)^2 + w^2),    stable while w_eff*h < limit
-   with alpha = 1 for semi-implicit Euler, both Verlets and leapfrog (then it is exact: z^2 + 2*g*h < 4
-   for semi-implicit Euler), alpha = 2.8284/2.7853 for RK4 (exact at both ends), and alpha = 2 for
-   Forest-Ruth (1.79 is the least that holds over damping ratios 0..1e5, found numerically; its kicks are
-   explicit Euler steps in v, and the middle one runs backwards). See motus_stepper_max_stable_dt.
-
-   (1): with MOTUS_STEPPER_REUSE_FORCES, the acceleration computed at the end of a step is reused at the
-   start of the next ("first same as last"). Only valid if nothing but the stepper changes positions,
-   velocities and forces between steps and the forces do not depend on velocity; a game that adds input
-   forces each frame should leave it off. */
-
-typedef enum motus_method {
-    MOTUS_SEMI_IMPLICIT_EULER = 0,
-    MOTUS_EXPLICIT_EULER,
-    MOTUS_POSITION_VERLET,
-    MOTUS_VELOCITY_VERLET,
-    MOTUS_LEAPFROG,
-    MOTUS_MIDPOINT,
-    MOTUS_RK4,
-    MOTUS_FOREST_RUTH,
-    MOTUS_EXACT_LINEAR_DRAG,
-    MOTUS_METHOD_COUNT
-} motus_method;
-
-enum {
-    MOTUS_STEPPER_REUSE_FORCES = 1 /* see (1) above */
-};
-
-/* Zero means default: `motus_stepper_desc desc = {0};` in C, `= {}` in C++, then set what you need. */
-typedef struct motus_stepper_desc {
-    int capacity;        /* most particles a step will be given */
-    motus_method method; /* 0: semi-implicit Euler */
-    void *scratch;       /* motus_stepper_scratch_size(method, capacity) bytes, aligned for motus_real */
-    size_t scratch_bytes;
-    unsigned flags; /* MOTUS_STEPPER_*; any other bit is MOTUS_ERROR_INVALID_DESC */
-} motus_stepper_desc;
-
-typedef struct motus_stepper {
-    motus_method method;
-    int capacity;
-    unsigned flags;
-    motus_vec2 *scratch;
-    motus_real time;           /* seconds stepped since init: the callback's time */
-    int history_count;         /* POSITION_VERLET: particles [0, history_count) have a last displacement */
-    motus_real previous_dt;    /* POSITION_VERLET: the step that displacement was made with */
-    int kept_acceleration_count; /* REUSE_FORCES: scratch holds a(x_n, v_n) of this many particles */
-} motus_stepper;
-
-/* Names, for tables and plots: "semi_implicit_euler", "rk4", ... NULL for a value out of range. */
-MOTUS_API const char *motus_method_name(motus_method method) {
-    switch (method) {
-    case MOTUS_SEMI_IMPLICIT_EULER: return "semi_implicit_euler";
-    case MOTUS_EXPLICIT_EULER: return "explicit_euler";
-    case MOTUS_POSITION_VERLET: return "position_verlet";
-    case MOTUS_VELOCITY_VERLET: return "velocity_verlet";
-    case MOTUS_LEAPFROG: return "leapfrog";
-    case MOTUS_MIDPOINT: return "midpoint";
-    case MOTUS_RK4: return "rk4";
-    case MOTUS_FOREST_RUTH: return "forest_ruth";
-    case MOTUS_EXACT_LINEAR_DRAG: return "exact_linear_drag";
-    case MOTUS_METHOD_COUNT: break;
-    }
-    return NULL;
-}
-
-/* Order of accuracy (0 for the exact stepper) and force evaluations per step, as tabled above. */
-MOTUS_API int motus_method_order(motus_method method) {
-    static const int order[MOTUS_METHOD_COUNT] = {1, 1, 2, 2, 2, 2, 4, 4, 0};
-    return (unsigned)method < MOTUS_METHOD_COUNT ? order[method] : -1;
-}
-MOTUS_API int motus_method_evaluations(motus_method method, unsigned flags) {
-    static const int evaluations[MOTUS_METHOD_COUNT] = {1, 1, 1, 2, 2, 2, 4, 3, 0};
+/* The largest w*h at which the method's amplitude on x'' = -w^2 x does not grow: 2 for semi-implicit
+   Euler and the Verlets, 2*sqrt(2) for RK4, 1.5734 for Forest-Ruth, 0 for explicit Euler and midpoint
+   (they grow at every dt), +Inf for the exact stepper (it takes no spring); -1 out of range. */
+MOTUS_DEF motus_real motus_method_stability_limit(motus_method method) {
+#define MOTUS__ROW(name, text, order, evaluations, limit) (motus_real)(limit),
+    static const motus_real limits[MOTUS_METHOD_COUNT] = {MOTUS__METHODS(MOTUS__ROW)};
+#undef MOTUS__ROW
     if ((unsigned)method >= MOTUS_METHOD_COUNT) return -1;
-    if ((flags & MOTUS_STEPPER_REUSE_FORCES) && (method == MOTUS_VELOCITY_VERLET || method == MOTUS_LEAPFROG))
-        return 1;
-    return evaluations[method];
+    return limits[method] < 0 ? (motus_real)HUGE_VAL : limits[method];
 }
-
-/* The largest w*h at which the method's amplitude on the undamped spring x'' = -w^2 x does not grow
-   (see STABILITY LIMITS): 2 for semi-implicit Euler, both Verlets and leapfrog, 2*sqrt(2) for RK4,
-   1.5734 for Forest-Ruth, 0 for explicit Euler and midpoint (they grow at every dt > 0), +Inf for the
-   exact stepper (it takes no spring, and solves what it takes exactly). -1 for a value out of range, as
-   motus_method_order. At the limit itself the symplectic methods grow linearly: stay below it. */
-MOTUS_API motus_real motus_method_stability_limit(motus_method method) {
-    switch (method) {
-    case MOTUS_SEMI_IMPLICIT_EULER:
-    case MOTUS_POSITION_VERLET:
-    case MOTUS_VELOCITY_VERLET:
-    case MOTUS_LEAPFROG: return 2;
-    case MOTUS_EXPLICIT_EULER:
-    case MOTUS_MIDPOINT: return 0;
-    case MOTUS_RK4: return (motus_real)2.8284271247461900976;
-    case MOTUS_FOREST_RUTH: return (motus_real)1.5734019474345367;
-    case MOTUS_EXACT_LINEAR_DRAG: return (motus_real)HUGE_VAL;
-    case MOTUS_METHOD_COUNT: break;
-    }
-    return -1;
-}
-
-/* The largest step for a method, given w^2 (stiffness over mass, summed as motus_stepper_max_stable_dt
-   does) and a decay rate g (1/s) from damping and drag: limit/w_eff, w_eff as in STABILITY LIMITS.
-   +Inf when nothing limits the step; 0 when no step is stable (or w_eff overflows). */
-MOTUS_API motus_real motus__stable_dt(motus_method method, motus_real omega_squared, motus_real decay_rate) {
+/* limit/w_eff (see >>methods); +Inf when nothing limits; 0 when no step is stable. */
+MOTUS_DEF motus_real motus__stable_dt(motus_method method, motus_real omega_squared, motus_real decay_rate) {
     const motus_real limit = motus_method_stability_limit(method);
     motus_real alpha = 1, half;
     if (!motus_real_is_finite(limit) || (omega_squared == 0 && decay_rate == 0)) return (motus_real)HUGE_VAL;
-    if (limit == 0) /* explicit Euler and midpoint: no spring is stable; a pure decay is while g*h < 2 */
-        return omega_squared > 0 ? 0 : 2 / decay_rate;
+    if (limit == 0) return omega_squared > 0 ? 0 : 2 / decay_rate;
     if (method == MOTUS_RK4) alpha = (motus_real)(2.8284271247461900976 / 2.7852935634050);
     if (method == MOTUS_FOREST_RUTH) alpha = 2;
     half = MOTUS_R(0.5) * alpha * decay_rate;
-    return limit / (half + MOTUS_SQRT(half * half + omega_squared));
+    return limit / (half + MOTUS_SQRT(MOTUS__ROUND(half * half) + omega_squared));
 }
-
-/* The largest dt for which `method` keeps an undamped spring of `stiffness` (N/m) on a particle of `mass`
-   (kg; to an anchor, or to an immovable particle) from growing: limit/w with w = sqrt(stiffness/mass).
-   No safety margin: that is the edge itself (use a fraction of it, or motus_substeps_for with a safety
-   factor). For a spring between two particles use the reduced mass m1*m2/(m1 + m2). Writes 0 for explicit
-   Euler and midpoint (no dt is stable), +Inf for stiffness 0 or the exact stepper. Bad input (NaN or Inf,
-   stiffness < 0, mass <= 0, a method out of range) returns a result and leaves *max_dt alone. */
-MOTUS_API motus_result motus_max_stable_dt(motus_method method, motus_real stiffness, motus_real mass,
+/* The largest dt at which `method` keeps an undamped spring of `stiffness` (N/m) on `mass` (kg) from
+   growing: limit*sqrt(mass/stiffness). No safety margin. 0 for explicit Euler and midpoint, +Inf for
+   stiffness 0 or the exact stepper. For a spring between two particles use the reduced mass. */
+MOTUS_DEF motus_result motus_max_stable_dt(motus_method method, motus_real stiffness, motus_real mass,
                                            motus_real *max_dt) {
     if (!max_dt) return MOTUS_ERROR_NULL_POINTER;
-    if ((unsigned)method >= MOTUS_METHOD_COUNT) return MOTUS_ERROR_UNSUPPORTED;
+    if ((unsigned)method >= MOTUS_METHOD_COUNT) return MOTUS_ERROR_INVALID_METHOD;
     if (!motus_real_is_finite(stiffness) || !motus_real_is_finite(mass)) return MOTUS_ERROR_NOT_FINITE;
     if (!(mass > 0)) return MOTUS_ERROR_INVALID_MASS;
-    if (stiffness < 0) return MOTUS_ERROR_INVALID_FORCES;
+    if (motus__real_bits(stiffness) > motus__real_bits((motus_real)-0.0) - 1 && stiffness != 0)
+        return MOTUS_ERROR_INVALID_SPRING; /* negative */
+    if (stiffness == 0) {
+        *max_dt = (motus_real)HUGE_VAL;
+        return MOTUS_OK;
+    }
+    /* sqrt(m/k) without an intermediate overflow: stiffness 1e-30 on mass 1e30 is a finite 1e30. */
     *max_dt = motus__stable_dt(method, stiffness / mass, 0);
+    if (*max_dt == 0 && motus_method_stability_limit(method) > 0)
+        *max_dt = motus_method_stability_limit(method) * MOTUS_SQRT(mass) / MOTUS_SQRT(stiffness);
     return MOTUS_OK;
 }
-
-/* The fewest equal substeps n that bring dt/n below safety*max_stable_dt (strictly, in motus_real
-   arithmetic: the substep motus_stepper_step_substepped takes). safety in (0, 1]. Below the limit a
-   symplectic method is stable but its amplitude wanders over an ellipse that stretches as w*h nears the
-   limit: semi-implicit Euler started at rest reaches 1/sqrt(1 - safety) times its start amplitude (3.2 at
-   0.9, 1.4 at 0.5), so a margin buys smoothness too. max_stable_dt = +Inf gives 1.
-   MOTUS_ERROR_TOO_STIFF if max_stable_dt is 0, or more than INT_MAX/2 substeps would be needed. */
-MOTUS_API motus_result motus_substeps_for(motus_real dt, motus_real max_stable_dt, motus_real safety, int *substeps) {
+/* The fewest equal substeps n with dt/n < safety*max_stable_dt (as computed in motus_real). safety in
+   (0, 1]. max_stable_dt +Inf gives 1; 0 (or -0) is MOTUS_ERROR_TOO_STIFF, as is needing more than 2^30.
+   A dt so small that dt/n would round to 0 (subnormal) gets the largest n that keeps dt/n > 0. */
+MOTUS_DEF motus_result motus_substeps_for(motus_real dt, motus_real max_stable_dt, motus_real safety, int *substeps) {
     motus_real limit, quotient;
     int n;
     if (!substeps) return MOTUS_ERROR_NULL_POINTER;
-    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
-    if ((!motus_real_is_finite(max_stable_dt) && !(max_stable_dt > 0)) || !motus_real_is_finite(safety))
-        return MOTUS_ERROR_NOT_FINITE; /* NaN or -Inf; +Inf means no limit */
+    if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    if (max_stable_dt != max_stable_dt || safety != safety) return MOTUS_ERROR_NOT_FINITE;
     if (!(max_stable_dt >= 0) || !(safety > 0 && safety <= 1)) return MOTUS_ERROR_INVALID_ARGUMENT;
-    if (!motus_real_is_finite(max_stable_dt)) {
+    if (!motus_real_is_finite(max_stable_dt) || dt == 0) {
         *substeps = 1;
         return MOTUS_OK;
     }
     limit = safety * max_stable_dt;
-    quotient = dt / limit; /* +Inf when limit is 0 */
-    if (!(quotient < (motus_real)(INT_MAX / 2))) return MOTUS_ERROR_TOO_STIFF;
-    /* ceil(dt/limit) up to rounding; then settle on the least n with dt/n < limit as computed. */
+    if (!(limit > 0)) return MOTUS_ERROR_TOO_STIFF; /* -0 and 0 alike, before any conversion */
+    quotient = dt / limit;
+    if (!(quotient < (motus_real)1073741824.0)) return MOTUS_ERROR_TOO_STIFF;
     n = (int)quotient;
     if (n < 1) n = 1;
     while (!(dt / (motus_real)n < limit)) ++n;
     while (n > 1 && dt / (motus_real)(n - 1) < limit) --n;
+    while (n > 1 && !(dt / (motus_real)n > 0)) --n;
     *substeps = n;
     return MOTUS_OK;
 }
 
-/* Scratch arrays per particle: [0] new x, [1] new v, [2] acceleration, then per method: RK stages, the
-   previous positions (position Verlet) or the acceleration kept for the next step (reuse). */
-MOTUS_API int motus__scratch_arrays(motus_method method) {
-    switch (method) {
-    case MOTUS_POSITION_VERLET: return 4;
-    case MOTUS_VELOCITY_VERLET:
-    case MOTUS_LEAPFROG: return 5;
-    case MOTUS_MIDPOINT: return 5;
-    case MOTUS_RK4: return 7;
-    default: return 3;
-    }
-}
-
-/* Bytes of memory a stepper for `capacity` particles needs; 0 for bad arguments. */
-MOTUS_API size_t motus_stepper_scratch_size(motus_method method, int capacity) {
-    if ((unsigned)method >= MOTUS_METHOD_COUNT || capacity < 0) return 0;
-    if ((size_t)capacity > ((size_t)-1) / (sizeof(motus_vec2) * 8)) return 0; /* absurd sizes overflow */
-    return (size_t)motus__scratch_arrays(method) * (size_t)capacity * sizeof(motus_vec2);
-}
-
-/* The alignment motus_real needs, in C99 (no _Alignof) and C++ alike. */
-typedef struct motus__align_probe {
-    char c;
-    motus_real r;
-} motus__align_probe;
-
-MOTUS_API motus_result motus_stepper_init(motus_stepper *stepper, const motus_stepper_desc *desc) {
-    size_t needed;
-    if (!stepper || !desc) return MOTUS_ERROR_NULL_POINTER;
-    if ((unsigned)desc->method >= MOTUS_METHOD_COUNT) return MOTUS_ERROR_UNSUPPORTED;
-    if (desc->capacity < 0) return MOTUS_ERROR_INVALID_COUNT;
-    needed = motus_stepper_scratch_size(desc->method, desc->capacity);
-    if (needed == 0 && desc->capacity > 0) return MOTUS_ERROR_INVALID_COUNT;
-    if (desc->scratch_bytes < needed) return MOTUS_ERROR_SCRATCH_TOO_SMALL;
-    if (!desc->scratch && needed > 0) return MOTUS_ERROR_NULL_POINTER;
-    /* A flag meant for something else (a MOTUS_HAS_* bit) would otherwise be ignored without a word; and
-       scratch read as motus_vec2 at a misaligned address is undefined behaviour (a fault on some CPUs). */
-    if ((desc->flags & ~(unsigned)MOTUS_STEPPER_REUSE_FORCES) ||
-        (uintptr_t)desc->scratch % offsetof(motus__align_probe, r) != 0)
-        return MOTUS_ERROR_INVALID_DESC;
-    /* Padding too: a stepper saved, hashed or compared byte for byte (replays) holds no stale bytes. */
-    memset(stepper, 0, sizeof *stepper);
-    stepper->method = desc->method;
-    stepper->capacity = desc->capacity;
-    stepper->flags = desc->flags;
-    stepper->scratch = (motus_vec2 *)desc->scratch;
-    stepper->time = 0;
-    stepper->history_count = 0;
-    stepper->previous_dt = 0;
-    stepper->kept_acceleration_count = 0;
+/* ---- clock: the game loop's accumulator ----
+   Frames take whatever time they take; the simulation should not. The clock turns each frame's duration
+   into a whole number of steps of one fixed dt and carries the rest to the next frame (G. Fiedler, "Fix
+   your timestep", 2004):
+       motus_clock_advance(&clock, GetFrameTime(), &steps);
+       for (i = 0; i < steps; ++i) { previous[k] = p[k].position...; step with clock.fixed_dt; }
+       draw(motus_vec2_lerp(previous, current, motus_clock_alpha(&clock)));
+   Interpolating between the last two steps hides the beat between frame and step rates; it draws the
+   state of up to one step ago (alpha*dt behind the newest state), the price of never guessing ahead. A
+   game that cannot afford it steps once more and extrapolates instead, which overshoots at collisions.
+   The accumulator counts ticks, 2^32 to a step: a frame of exactly dt is exactly one step for ever. At
+   most max_steps_per_frame steps run per frame; whole steps beyond are dropped and counted. */
+#define MOTUS__CLOCK_TICKS_PER_STEP 4294967296.0 /* 2^32 */
+#define MOTUS__CLOCK_TICK_MASK 0xFFFFFFFFu
+MOTUS_DEF motus_result motus_clock_init(motus_clock *clock, motus_real fixed_dt, int max_steps_per_frame) {
+    if (!clock) return MOTUS_ERROR_NULL_POINTER;
+    if (!motus__positive_finite(fixed_dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    if (max_steps_per_frame < 0) return MOTUS_ERROR_INVALID_COUNT;
+    memset(clock, 0, sizeof *clock);
+    clock->fixed_dt = fixed_dt;
+    clock->max_steps_per_frame = max_steps_per_frame ? max_steps_per_frame : MOTUS_CLOCK_DEFAULT_MAX_STEPS;
     return MOTUS_OK;
 }
-
-/* Forget what the stepper remembers between steps (position Verlet's previous positions, a reused
-   acceleration). Call it after moving particles or changing their velocities by hand. */
-MOTUS_API void motus_stepper_reset(motus_stepper *stepper) {
-    if (!stepper) return;
-    stepper->history_count = 0;
-    stepper->kept_acceleration_count = 0;
-}
-
-/* y_out = y + a*s, for the position and velocity halves of a stage. */
-MOTUS_API void motus__axpy(int count, const motus_vec2 *y, const motus_vec2 *a, motus_real s, motus_vec2 *out) {
-    int i;
-    for (i = 0; i < count; ++i) out[i] = motus_vec2_add(y[i], motus_vec2_scale(a[i], s));
-}
-
-/* Copies particle positions (velocities) into an array, the state a stage starts from. */
-MOTUS_API void motus__gather(const motus_particle *particles, int count, motus_vec2 *positions,
-                             motus_vec2 *velocities) {
-    int i;
-    for (i = 0; i < count; ++i) {
-        if (positions) positions[i] = particles[i].position;
-        if (velocities) velocities[i] = particles[i].velocity;
+MOTUS_DEF uint64_t motus__saturating_add(uint64_t a, uint64_t b) { return a + b < a ? ~(uint64_t)0 : a + b; }
+/* Adds a frame of frame_seconds (finite, >= 0) and sets *steps_to_run. A bad frame time leaves the clock as
+   it was with *steps_to_run = 0. */
+MOTUS_DEF motus_result motus_clock_advance(motus_clock *clock, motus_real frame_seconds, int *steps_to_run) {
+    double frame_steps, dt;
+    uint64_t ticks, steps, cap, dropped = 0;
+    motus_real time_dropped = 0;
+    if (!clock || !steps_to_run) return MOTUS_ERROR_NULL_POINTER;
+    *steps_to_run = 0;
+    if (!motus_real_is_finite(frame_seconds) || frame_seconds < 0) return MOTUS_ERROR_INVALID_FRAME_TIME;
+    if (!motus__positive_finite(clock->fixed_dt) || clock->max_steps_per_frame <= 0 ||
+        clock->accumulator > MOTUS__CLOCK_TICK_MASK)
+        return MOTUS_ERROR_INVALID_COUNT;
+    dt = (double)clock->fixed_dt;
+    cap = (uint64_t)clock->max_steps_per_frame;
+    frame_steps = (double)frame_seconds / dt;
+    if (frame_steps < 2147483648.0) { /* < 2^31 steps: the ticks fit in 64 bits */
+        ticks = clock->accumulator + (uint64_t)(frame_steps * MOTUS__CLOCK_TICKS_PER_STEP + 0.5);
+        steps = ticks >> 32;
+        clock->accumulator = ticks & MOTUS__CLOCK_TICK_MASK;
+        if (steps > cap) {
+            dropped = steps - cap;
+            time_dropped = (motus_real)((double)dropped * dt);
+            steps = cap;
+        }
+    } else {
+        steps = cap;
+        dropped = frame_steps < 1.8e19 ? (uint64_t)frame_steps - cap : ~(uint64_t)0;
+        time_dropped = (motus_real)((double)frame_seconds - (double)cap * dt);
     }
-}
-
-MOTUS_API motus_result motus__step_exact_drag(const motus_forces *forces, const motus_particle *particles,
-                                              int count, motus_real h, motus_vec2 *x, motus_vec2 *v) {
-    motus_real phi1, phi2, decay;
-    int i;
-    if (forces->quadratic_drag != 0 || forces->attractor_strength != 0 || forces->spring_count != 0 ||
-        forces->callback)
-        return MOTUS_ERROR_UNSUPPORTED;
-    motus__drag_phi(forces->linear_drag * h, &phi1, &phi2);
-    decay = MOTUS_EXP(-forces->linear_drag * h);
-    for (i = 0; i < count; ++i) {
-        const motus_particle *p = &particles[i];
-        /* Nothing acts on an immovable particle, drag included: it keeps its velocity (decay 1, phi1 1). */
-        const int movable = p->inverse_mass != 0;
-        const motus_real particle_decay = movable ? decay : 1, particle_phi1 = movable ? phi1 : 1;
-        motus_vec2 a = motus_vec2_scale(motus_vec2_add(motus_vec2_scale(p->force, p->inverse_mass), forces->gravity),
-                                        (motus_real)movable);
-        v[i] = motus_vec2_add(motus_vec2_scale(p->velocity, particle_decay), motus_vec2_scale(a, h * particle_phi1));
-        x[i] = motus_vec2_add(p->position, motus_vec2_add(motus_vec2_scale(p->velocity, h * particle_phi1),
-                                                          motus_vec2_scale(a, h * h * phi2)));
-    }
+    clock->steps_dropped_last_frame = dropped;
+    clock->steps_dropped_total = motus__saturating_add(clock->steps_dropped_total, dropped);
+    clock->time_dropped_last_frame = time_dropped;
+    clock->time_dropped_total += (double)time_dropped;
+    clock->steps_total = motus__saturating_add(clock->steps_total, steps);
+    *steps_to_run = (int)steps;
     return MOTUS_OK;
 }
-
-/* Semi-implicit or explicit Euler in one pass over particles whose forces do not couple them (no springs,
-   no callback): read, accelerate, write the new state to x, v. Returns nonzero if anything came out
-   non-finite or a mass was negative. semi, quadratic and attractor are constants where it is inlined. */
-MOTUS__INLINE int motus__euler_pass(const motus_forces *f, const motus_particle *particles, int count, motus_real h,
-                                    motus_vec2 *x, motus_vec2 *v, int semi, int quadratic, int attractor) {
-    motus_real check = 0;
-    int i, negative_mass = 0;
-    for (i = 0; i < count; ++i) {
-        const motus_particle *p = &particles[i];
-        motus_vec2 a = motus__particle_acceleration(f, p->force, p->inverse_mass, p->position, p->velocity,
-                                                    quadratic, attractor);
-        motus_vec2 velocity = motus_vec2_add(p->velocity, motus_vec2_scale(a, h));
-        motus_vec2 position = motus_vec2_add(p->position, motus_vec2_scale(semi ? velocity : p->velocity, h));
-        x[i] = position;
-        v[i] = velocity;
-        check += (position.x + position.y) + (velocity.x + velocity.y);
-        negative_mass |= p->inverse_mass < 0;
-    }
-    return negative_mass | !motus_real_is_finite(check);
+/* Where the clock is between the last step and the next, in [0, 1). */
+MOTUS_DEF motus_real motus_clock_alpha(const motus_clock *clock) {
+    motus_real alpha;
+    if (!clock || clock->accumulator > MOTUS__CLOCK_TICK_MASK) return 0;
+    alpha = (motus_real)((double)clock->accumulator / MOTUS__CLOCK_TICKS_PER_STEP);
+    return alpha < 1 ? alpha : 1 - MOTUS_REAL_EPSILON / 2;
+}
+MOTUS_DEF double motus_clock_time(const motus_clock *clock) {
+    return clock ? (double)clock->steps_total * (double)clock->fixed_dt : 0;
 }
 
-/* A sum of every new value is NaN or infinite if any value is, which costs far less than testing each
-   one. It can also overflow with every value finite (positions near the float maximum): only then are the
-   values tested one by one. Returns nonzero if the state really is not finite, or a mass is negative. */
-MOTUS_API int motus__state_broken(const motus_particle *particles, int count, const motus_vec2 *x,
-                                  const motus_vec2 *v, int suspicious) {
-    int i, broken = 0;
-    if (!suspicious) return 0;
-    for (i = 0; i < count; ++i)
-        broken |= motus__vec2_not_finite(x[i]) | motus__vec2_not_finite(v[i]) | (particles[i].inverse_mass < 0);
-    return broken;
+/* ---- messages and checks ---- */
+MOTUS_DEF const char *motus_result_string(motus_result result) {
+#define MOTUS__RESULT_TEXT(name, text) text,
+    static const char *const texts[MOTUS_RESULT_COUNT] = {MOTUS__RESULTS(MOTUS__RESULT_TEXT)};
+#undef MOTUS__RESULT_TEXT
+    return (unsigned)result < MOTUS_RESULT_COUNT ? texts[result] : "unknown motus_result value";
 }
-
-/* Why a step that produced a non-finite state (or met a negative mass) failed: a broken particle, or else
-   an overflow of finite inputs (the force model was checked before the step). */
-MOTUS_API motus_result motus__diagnose(const motus_particle *particles, int count) {
-    motus_result result;
-    int i;
-    for (i = 0; i < count; ++i) {
-        if (particles[i].inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS; /* first, as motus_particle_step */
-        result = motus_particle_check(&particles[i]);
-        if (result != MOTUS_OK) return result;
-    }
-    return MOTUS_ERROR_OVERFLOW;
+MOTUS_DEF const char *motus_field_name(motus_field field) {
+    static const char *const names[MOTUS_FIELD_COUNT] = {"none", "position", "velocity", "force", "inverse_mass"};
+    return (unsigned)field < MOTUS_FIELD_COUNT ? names[field] : NULL;
 }
-
-/* Advances particles[0..count) by dt under `forces` (NULL: no forces but the accumulated ones) with the
-   stepper's method. On any result but MOTUS_OK nothing is written: not the particles, not the stepper nor
-   what it keeps between steps (the rest of its scratch is working memory). count 0 is a step of nothing:
-   particles may be NULL, the clock advances. */
-MOTUS_API motus_result motus_stepper_step(motus_stepper *stepper, motus_particle *particles, int count,
-                                          const motus_forces *forces, motus_real dt) {
-    static const motus_forces no_forces = {{0, 0}, 0, 0, 0, {0, 0}, NULL, 0, NULL, NULL};
-    motus_vec2 *x, *v, *a, no_scratch[1];
-    const motus_real h = dt, t = stepper ? stepper->time : 0;
-    motus_result result;
-    int i, reuse, bad = 0, checked = 0, suspicious = 0;
-    if (!stepper || (!particles && count > 0)) return MOTUS_ERROR_NULL_POINTER;
-    if (!stepper->scratch && stepper->capacity > 0) return MOTUS_ERROR_NULL_POINTER; /* filled by hand */
-    if (count < 0 || count > stepper->capacity) return MOTUS_ERROR_INVALID_COUNT;
-    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
-    /* The clock the callback sees must stay finite too (two steps of dt near the maximum overflow it). */
-    if (!motus_real_is_finite(stepper->time + dt)) return MOTUS_ERROR_OVERFLOW;
-    if (!forces) forces = &no_forces;
-    /* The force model is checked up front (its springs index the arrays). The particles are not: a NaN or
-       Inf in one, or a negative mass, makes the new state non-finite or trips `bad` below, and only then
-       are they searched for the culprit. Nothing can hide: an immovable particle passes a NaN on, and a
-       value a method does not read this step is checked where it is skipped. */
-    result = motus_forces_check(forces, count);
-    if (result != MOTUS_OK) return result;
-
-    /* A stepper of capacity 0 may have no scratch, and NULL + 0 is undefined behaviour in C (C11 6.5.6;
-       UBSan reports it): offsets from a local array instead. count is 0 then, so nothing reads it. */
-    x = stepper->scratch ? stepper->scratch : no_scratch;
-    v = x + stepper->capacity;
-    a = v + stepper->capacity;
-    reuse = (stepper->flags & MOTUS_STEPPER_REUSE_FORCES) && stepper->kept_acceleration_count == count;
-
-    switch (stepper->method) {
-    case MOTUS_SEMI_IMPLICIT_EULER:
-    case MOTUS_EXPLICIT_EULER:
-        if (forces->spring_count == 0 && !forces->callback) {
-            const int semi = stepper->method == MOTUS_SEMI_IMPLICIT_EULER;
-            switch (motus__terms(forces) * 2 + semi) {
-            case 0: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 0, 0, 0); break;
-            case 1: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 1, 0, 0); break;
-            case 2: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 0, 1, 0); break;
-            case 3: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 1, 1, 0); break;
-            case 4: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 0, 0, 1); break;
-            case 5: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 1, 0, 1); break;
-            case 6: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 0, 1, 1); break;
-            default: suspicious = motus__euler_pass(forces, particles, count, h, x, v, 1, 1, 1); break;
-            }
-            checked = 1;
-            break;
-        }
-        motus__gather(particles, count, x, v);
-        motus__accelerations(forces, particles, count, x, v, t, a);
-        for (i = 0; i < count; ++i) {
-            motus_vec2 old_velocity = v[i];
-            v[i] = motus_vec2_add(v[i], motus_vec2_scale(a[i], h));
-            x[i] = motus_vec2_add(x[i], motus_vec2_scale(stepper->method == MOTUS_EXPLICIT_EULER ? old_velocity : v[i], h));
-        }
-        break;
-    case MOTUS_POSITION_VERLET: {
-        motus_vec2 *displacement = a + stepper->capacity; /* x_n - x_{n-1}, kept between steps */
-        const int known = stepper->history_count < count ? stepper->history_count : count;
-        const motus_real ratio = known > 0 ? h / stepper->previous_dt : 0;
-        motus__gather(particles, count, x, v);
-        /* The velocity forces see: the last displacement over its step, (x_n - x_{n-1})/h_p. */
-        for (i = 0; i < known; ++i) {
-            bad |= motus__vec2_not_finite(v[i]); /* the velocity given is replaced here: see that it was fine */
-            v[i] = motus_vec2_scale(displacement[i], MOTUS_R(1.0) / stepper->previous_dt);
-        }
-        motus__accelerations(forces, particles, count, x, v, t, a);
-        for (i = 0; i < count; ++i) {
-            motus_vec2 step = i < known ? motus_vec2_add(motus_vec2_scale(displacement[i], ratio),
-                                                         motus_vec2_scale(a[i], h * (h + stepper->previous_dt) * MOTUS_R(0.5)))
-                                        : motus_vec2_add(motus_vec2_scale(particles[i].velocity, h),
-                                                         motus_vec2_scale(a[i], MOTUS_R(0.5) * h * h));
-            x[i] = motus_vec2_add(x[i], step);
-            v[i] = motus_vec2_add(motus_vec2_scale(step, MOTUS_R(1.0) / h), motus_vec2_scale(a[i], MOTUS_R(0.5) * h));
-            a[i] = step; /* the displacement to keep, once the step is accepted */
-        }
-        break;
-    }
-    case MOTUS_VELOCITY_VERLET:
-    case MOTUS_LEAPFROG: {
-        motus_vec2 *kept = a + stepper->capacity; /* a(x_n, v_n) from the last step (REUSE_FORCES) */
-        motus_vec2 *predicted = kept + stepper->capacity; /* v_n + a_n*h, the velocity the end forces see */
-        /* a_n: the kept one, or evaluated now into `a`, never into `kept`: a step that fails must leave the
-           kept accelerations as they were (the next step may reuse them). */
-        motus_vec2 *start = reuse ? kept : a;
-        motus__gather(particles, count, x, v);
-        if (!reuse) motus__accelerations(forces, particles, count, x, v, t, a);
-        else /* the forces given are not evaluated this time: see that they were fine */
-            for (i = 0; i < count; ++i) bad |= motus__vec2_not_finite(particles[i].force);
-        if (stepper->method == MOTUS_VELOCITY_VERLET) {
-            for (i = 0; i < count; ++i) {
-                x[i] = motus_vec2_add(x[i], motus_vec2_add(motus_vec2_scale(v[i], h),
-                                                           motus_vec2_scale(start[i], MOTUS_R(0.5) * h * h)));
-                predicted[i] = motus_vec2_add(v[i], motus_vec2_scale(start[i], h));
-                /* v_n stays in the particle (v is its copy), so v can hold a_n while `a` takes a_{n+1} */
-                v[i] = start[i];
-            }
-            motus__accelerations(forces, particles, count, x, predicted, t + h, a);
-            for (i = 0; i < count; ++i) {
-                v[i] = motus_vec2_add(particles[i].velocity, motus_vec2_scale(motus_vec2_add(v[i], a[i]), MOTUS_R(0.5) * h));
-            }
-        } else {
-            for (i = 0; i < count; ++i) {
-                motus_vec2 half = motus_vec2_add(v[i], motus_vec2_scale(start[i], MOTUS_R(0.5) * h));
-                x[i] = motus_vec2_add(x[i], motus_vec2_scale(half, h));
-                v[i] = half;
-                predicted[i] = motus_vec2_add(half, motus_vec2_scale(start[i], MOTUS_R(0.5) * h));
-            }
-            motus__accelerations(forces, particles, count, x, predicted, t + h, a);
-            for (i = 0; i < count; ++i) {
-                v[i] = motus_vec2_add(v[i], motus_vec2_scale(a[i], MOTUS_R(0.5) * h));
-            }
-        }
-        break;
-    }
-    case MOTUS_MIDPOINT: {
-        motus_vec2 *x_mid = a + stepper->capacity, *v_mid = x_mid + stepper->capacity;
-        motus__gather(particles, count, x, v);
-        motus__accelerations(forces, particles, count, x, v, t, a);
-        motus__axpy(count, x, v, MOTUS_R(0.5) * h, x_mid);
-        motus__axpy(count, v, a, MOTUS_R(0.5) * h, v_mid);
-        motus__accelerations(forces, particles, count, x_mid, v_mid, t + MOTUS_R(0.5) * h, a);
-        motus__axpy(count, x, v_mid, h, x);
-        motus__axpy(count, v, a, h, v);
-        break;
-    }
-    case MOTUS_RK4: {
-        /* k1..k4 summed into dx, dv with weights 1, 2, 2, 1; the stage state in xs, vs. */
-        motus_vec2 *xs = a + stepper->capacity, *vs = xs + stepper->capacity;
-        motus_vec2 *dx = vs + stepper->capacity, *dv = dx + stepper->capacity;
-        static const motus_real stage_c[3] = {MOTUS_R(0.5), MOTUS_R(0.5), MOTUS_R(1.0)};
-        static const motus_real weight[3] = {MOTUS_R(2.0), MOTUS_R(2.0), MOTUS_R(1.0)};
-        int stage;
-        motus__gather(particles, count, x, v);
-        motus__accelerations(forces, particles, count, x, v, t, a);
-        for (i = 0; i < count; ++i) {
-            dx[i] = v[i];
-            dv[i] = a[i];
-            vs[i] = v[i];
-        }
-        for (stage = 0; stage < 3; ++stage) {
-            motus_real c = stage_c[stage] * h;
-            for (i = 0; i < count; ++i) {
-                motus_vec2 k_x = vs[i]; /* the previous stage's velocity is this stage's dx/dt slope */
-                xs[i] = motus_vec2_add(x[i], motus_vec2_scale(k_x, c));
-                vs[i] = motus_vec2_add(v[i], motus_vec2_scale(a[i], c));
-            }
-            motus__accelerations(forces, particles, count, xs, vs, t + c, a);
-            for (i = 0; i < count; ++i) {
-                dx[i] = motus_vec2_add(dx[i], motus_vec2_scale(vs[i], weight[stage]));
-                dv[i] = motus_vec2_add(dv[i], motus_vec2_scale(a[i], weight[stage]));
-            }
-        }
-        motus__axpy(count, x, dx, h / MOTUS_R(6.0), x);
-        motus__axpy(count, v, dv, h / MOTUS_R(6.0), v);
-        break;
-    }
-    case MOTUS_FOREST_RUTH: {
-        /* theta = 1/(2 - 2^(1/3)) */
-        const motus_real theta = (motus_real)1.3512071919596576340476878089715;
-        const motus_real drift[4] = {theta * MOTUS_R(0.5), (1 - theta) * MOTUS_R(0.5), (1 - theta) * MOTUS_R(0.5),
-                                     theta * MOTUS_R(0.5)};
-        const motus_real kick[3] = {theta, 1 - 2 * theta, theta};
-        motus_real stage_time = t;
-        int stage;
-        motus__gather(particles, count, x, v);
-        for (stage = 0; stage < 3; ++stage) {
-            motus__axpy(count, x, v, drift[stage] * h, x);
-            stage_time += drift[stage] * h;
-            motus__accelerations(forces, particles, count, x, v, stage_time, a);
-            motus__axpy(count, v, a, kick[stage] * h, v);
-        }
-        motus__axpy(count, x, v, drift[3] * h, x);
-        break;
-    }
-    case MOTUS_EXACT_LINEAR_DRAG:
-        result = motus__step_exact_drag(forces, particles, count, h, x, v);
-        if (result != MOTUS_OK) return result;
-        break;
-    default: return MOTUS_ERROR_UNSUPPORTED;
-    }
-
-    /* All or nothing: write back only a state that is finite everywhere (the fused Euler pass summed its
-       values as it went). */
-    if (!checked) {
-        motus_real check = 0;
-        int negative_mass = 0;
-        for (i = 0; i < count; ++i) {
-            check += (x[i].x + x[i].y) + (v[i].x + v[i].y);
-            negative_mass |= particles[i].inverse_mass < 0;
-        }
-        suspicious = negative_mass | !motus_real_is_finite(check);
-    }
-    if (bad || motus__state_broken(particles, count, x, v, suspicious)) return motus__diagnose(particles, count);
-    if (stepper->method == MOTUS_POSITION_VERLET) {
-        motus_vec2 *displacement = a + stepper->capacity;
-        for (i = 0; i < count; ++i) displacement[i] = a[i];
-        stepper->history_count = count;
-        stepper->previous_dt = h;
-    }
-    if (stepper->method == MOTUS_VELOCITY_VERLET || stepper->method == MOTUS_LEAPFROG) {
-        motus_vec2 *kept = a + stepper->capacity;
-        for (i = 0; i < count; ++i) kept[i] = a[i]; /* a(x_{n+1}): the next step's first evaluation */
-        stepper->kept_acceleration_count = count;
-    }
-    for (i = 0; i < count; ++i) {
-        particles[i].position = x[i];
-        particles[i].velocity = v[i];
-    }
-    stepper->time += dt;
-    return MOTUS_OK;
+MOTUS_DEF void motus__report(motus_check_report *report, int index, motus_field field, int component) {
+    if (!report) return;
+    report->index = index;
+    report->field = field;
+    report->component = component;
+    report->field_name = motus_field_name(field);
 }
-
-/* The largest dt with which motus_stepper_step keeps the springs and drags of `forces` on particles[0..count)
-   from growing, for the stepper's method: limit/w_eff (see STABILITY LIMITS), with w and g bounded by
-   Gershgorin's theorem on the columns of M^-1*K and M^-1*C (spring stiffness and damping matrices):
-       w^2 <= max over movable j of  sum over j's springs s of k_s*(1/m_j + 1/m_other)
-       g   <= linear_drag + 2*quadratic_drag*max|v_j| + max over movable j of  sum over s of c_s*(1/m_j + 1/m_other)
-   1/m_other is 0 for an anchor or an immovable end. One spring: w^2 = k*(1/m1 + 1/m2) exactly; a long
-   chain of equal springs: 4k/m, its highest mode. What it does not cover: a spring with rest length L
-   squeezed below L/2 (sideways it then acts as a negative stiffness k*(L/|d| - 1) > k: a buckling, not
-   an oscillation), the attractor and the callback. The damping rate g is combined with w as if they
-   shared modes; for damping that does not, w_eff is an estimate. Quadratic drag is taken at the
-   velocities given. Writes +Inf when nothing limits the step, 0 for explicit Euler or midpoint with a
-   spring. Uses the first count elements of the stepper's scratch as work space (not its state: what it
-   keeps between steps is untouched). Bad input returns a result and leaves *max_dt alone; the exact
-   stepper with springs or other terms it cannot take returns MOTUS_ERROR_UNSUPPORTED, as its step does. */
-MOTUS_API motus_result motus_stepper_max_stable_dt(motus_stepper *stepper, const motus_particle *particles, int count,
-                                                   const motus_forces *forces, motus_real *max_dt) {
-    motus_vec2 *sums; /* per particle: sum of k_s*(1/m_j + 1/m_other) in x, of c_s*(...) in y */
-    motus_real omega_squared = 0, spring_decay = 0, fastest = 0, decay;
-    motus_result result;
-    int i;
-    if (!stepper || !max_dt || (!particles && count > 0)) return MOTUS_ERROR_NULL_POINTER;
-    if (count < 0 || count > stepper->capacity) return MOTUS_ERROR_INVALID_COUNT;
-    if ((unsigned)stepper->method >= MOTUS_METHOD_COUNT) return MOTUS_ERROR_UNSUPPORTED;
-    if (!forces) {
-        *max_dt = (motus_real)HUGE_VAL;
-        return MOTUS_OK;
-    }
-    result = motus_forces_check(forces, count);
-    if (result != MOTUS_OK) return result;
-    if (stepper->method == MOTUS_EXACT_LINEAR_DRAG) {
-        if (forces->quadratic_drag != 0 || forces->attractor_strength != 0 || forces->spring_count != 0 ||
-            forces->callback)
-            return MOTUS_ERROR_UNSUPPORTED;
-        *max_dt = (motus_real)HUGE_VAL;
-        return MOTUS_OK;
-    }
+/* The first bad particle: fields in the order position, velocity, force (x, y, z each), inverse mass. */
+MOTUS_DEF motus_result motus__particles_check(const motus_real *base, int stride, int dims, int count,
+                                              motus_check_report *report) {
+    int i, k;
+    motus__report(report, -1, MOTUS_FIELD_NONE, -1);
+    if (!base && count > 0) return MOTUS_ERROR_NULL_POINTER;
+    if (count < 0) return MOTUS_ERROR_INVALID_COUNT;
     for (i = 0; i < count; ++i) {
-        if (!motus_real_is_finite(particles[i].inverse_mass)) return MOTUS_ERROR_NOT_FINITE;
-        if (particles[i].inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
-    }
-    if (forces->quadratic_drag != 0)
-        for (i = 0; i < count; ++i) {
-            motus_real speed = motus_vec2_length(particles[i].velocity);
-            if (!motus_real_is_finite(speed)) return motus_vec2_is_finite(particles[i].velocity)
-                                                         ? MOTUS_ERROR_OVERFLOW : MOTUS_ERROR_NOT_FINITE;
-            if (speed > fastest) fastest = speed;
+        const motus_real *p = base + (size_t)i * (size_t)stride;
+        for (k = 0; k < 3 * dims; ++k)
+            if (!motus_real_is_finite(p[k])) {
+                motus__report(report, i, (motus_field)(MOTUS_FIELD_POSITION + k / dims), k % dims);
+                return MOTUS_ERROR_NOT_FINITE;
+            }
+        if (!motus_real_is_finite(p[3 * dims]) || p[3 * dims] < 0) {
+            motus__report(report, i, MOTUS_FIELD_INVERSE_MASS, -1);
+            return motus_real_is_finite(p[3 * dims]) ? MOTUS_ERROR_INVALID_MASS : MOTUS_ERROR_NOT_FINITE;
         }
-    sums = stepper->scratch;
-    for (i = 0; i < count; ++i) sums[i] = motus_v2(0, 0);
-    for (i = 0; i < forces->spring_count; ++i) {
-        const motus_spring *s = &forces->springs[i];
-        const motus_real both = particles[s->a].inverse_mass + (s->b < 0 ? 0 : particles[s->b].inverse_mass);
-        const motus_vec2 term = motus_v2(s->stiffness * both, s->damping * both);
-        sums[s->a] = motus_vec2_add(sums[s->a], term);
-        if (s->b >= 0) sums[s->b] = motus_vec2_add(sums[s->b], term);
-    }
-    for (i = 0; i < count; ++i) {
-        if (particles[i].inverse_mass == 0) continue; /* nothing moves it: its column bounds no motion */
-        if (sums[i].x > omega_squared) omega_squared = sums[i].x;
-        if (sums[i].y > spring_decay) spring_decay = sums[i].y;
-    }
-    decay = forces->linear_drag + 2 * forces->quadratic_drag * fastest + spring_decay;
-    *max_dt = motus__stable_dt(stepper->method, omega_squared, decay);
-    return MOTUS_OK;
-}
-
-/* motus_stepper_step over dt in n equal substeps of dt/n, n the fewest that keep each below
-   safety*motus_stepper_max_stable_dt (motus_substeps_for), at most max_substeps. *taken (may be NULL)
-   gets the substeps completed. Everything is checked before the first substep, and a substep writes
-   nothing unless it succeeds: so bad input, or a scene that needs more than max_substeps
-   (MOTUS_ERROR_TOO_STIFF), leaves particles and stepper as they were, with *taken = 0. A later substep
-   that overflows stops there, with the state of the substeps before it and *taken saying how many. The
-   stepper's time grows by n roundings of dt/n, which may differ from dt in the last bit. */
-MOTUS_API motus_result motus_stepper_step_substepped(motus_stepper *stepper, motus_particle *particles, int count,
-                                                     const motus_forces *forces, motus_real dt, motus_real safety,
-                                                     int max_substeps, int *taken) {
-    motus_real max_dt = 0, h;
-    motus_result result;
-    int n = 0, i;
-    if (taken) *taken = 0;
-    if (!stepper || (!particles && count > 0)) return MOTUS_ERROR_NULL_POINTER;
-    if (count < 0 || count > stepper->capacity) return MOTUS_ERROR_INVALID_COUNT;
-    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
-    if (max_substeps < 1) return MOTUS_ERROR_INVALID_ARGUMENT;
-    result = motus_stepper_max_stable_dt(stepper, particles, count, forces, &max_dt);
-    if (result != MOTUS_OK) return result;
-    result = motus_substeps_for(dt, max_dt, safety, &n);
-    if (result != MOTUS_OK) return result;
-    if (n > max_substeps) return MOTUS_ERROR_TOO_STIFF;
-    h = dt / (motus_real)n;
-    for (i = 0; i < n; ++i) {
-        result = motus_stepper_step(stepper, particles, count, forces, h);
-        if (result != MOTUS_OK) return result;
-        if (taken) *taken = i + 1;
     }
     return MOTUS_OK;
 }
+MOTUS_DEF motus_result motus_particles_check(const motus_particle *particles, int count, motus_check_report *report) {
+    return motus__particles_check(particles ? &particles->position.x : NULL,
+                                  (int)(sizeof(motus_particle) / sizeof(motus_real)), 2, count, report);
+}
+MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, int count, motus_check_report *report) {
+    return motus__particles_check(particles ? &particles->position.x : NULL,
+                                  (int)(sizeof(motus_particle3) / sizeof(motus_real)), 3, count, report);
+}
 
-/* =================================================================================================
-   Batch kernels: many particles in arrays, only the work the scene has
-   =================================================================================================
-   For thousands to millions of particles: one array per component (x[], y[], vx[], ...; "structure of
-   arrays"), owned by the caller, stepped over a range [first, first + count) so that a job system or
-   OpenMP can split the work: each particle's result does not depend on how the range is split.
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+#endif /* MOTUS_H */
 
-   The scene says what it has (MOTUS_HAS_*); motus picks a kernel compiled for exactly that: arrays the
-   scene does not have are never loaded (they may be NULL) and there is no per-particle test of a feature.
-   Gravity, linear drag, damping, per-particle mass, accumulated forces and bounds have a kernel for each of
-   their 64 combinations; quadratic drag, an attractor or explicit Euler switch to one general kernel that
-   computes every term (the ones the scene lacks with neutral values). The particles are processed
-   MOTUS_SIMD_BYTES at a time with the compiler's vector extensions (GCC, Clang), one at a time elsewhere;
-   every lane does the same IEEE operations in the same order as motus_stepper_step followed by
-   motus_particle_damp_per_step / _per_second and motus_particle_bounce, so the two agree bit for bit
-   (in a build without floating-point contraction: see -ffp-contract=off), with one exception: a scene with
-   nothing that changes velocities (no gravity, drag, damping, forces or bounds) does not write them, so a
-   velocity of -0 stays -0 where the stepper's v + 0*h gives +0.
+/* >>implementation ============================================================================== */
+#if defined(MOTUS_IMPLEMENTATION) && !defined(MOTUS__IMPLEMENTED)
+#define MOTUS__IMPLEMENTED
+/* The engine, compiled once per program. Contraction off for all of it (see >>config): its functions are
+   called from your code, never inlined into it, so the pragma costs nothing. */
+#ifndef MOTUS_ALLOW_FP_CONTRACT
+#if defined(__clang__)
+#pragma float_control(push)
+#pragma STDC FP_CONTRACT OFF
+#define MOTUS__ENGINE_PRAGMA_CLANG
+#elif defined(__GNUC__) && !defined(__STRICT_ANSI__) && (defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF))
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+#define MOTUS__ENGINE_PRAGMA_GCC
+#endif
+#endif
 
-   Per particle and step, in this order (SI units; * is per component):
-       a = F*inverse_mass + gravity - k*v - c*|v|*v - mu*r/|r|^3     (r from the attractor)
-       v += a*h;  x += v*h           (semi-implicit Euler; explicit Euler moves x with the old v)
-       v *= damping                  (per step), or damping^h (per second); |v| < MOTUS_REST_SPEED -> 0
-       bounds: past a wall, x is mirrored back and v *= -restitution; then x is clamped into the box
-   Springs couple particles, so they are not part of the per-range step: motus_batch_add_spring_forces
-   adds their forces to the force arrays for the whole batch first (2D).
+#include <limits.h> /* INT_MAX */
 
-   Checks: the scene and the arguments are checked on every call (O(1)). The particle data is not read
-   twice in release builds: the kernel sums what it writes, and a NaN or Inf in the new state makes the
-   step return MOTUS_ERROR_NOT_FINITE after the range was written (overflow included: the inputs are gone,
-   so the step cannot tell it from bad data). Define MOTUS_CHECKED to have every step check its range first
-   (motus_batch_check) and write nothing on bad data, then run the step once without storing anything (a
-   dry run) and return MOTUS_ERROR_OVERFLOW, again with nothing written, if a result would not be finite:
-   a checked step reads its range three times. Or call motus_batch_check yourself where data comes in. */
+#ifdef __cplusplus
+extern "C" {
+#endif
 
-enum {
-    MOTUS_HAS_GRAVITY = 1u << 0,            /* scene.gravity */
-    MOTUS_HAS_LINEAR_DRAG = 1u << 1,        /* scene.linear_drag */
-    MOTUS_HAS_DAMPING_PER_STEP = 1u << 2,   /* scene.damping: v *= damping after each step */
-    MOTUS_HAS_DAMPING_PER_SECOND = 1u << 3, /* scene.damping: v *= damping^dt after each step */
-    MOTUS_HAS_PARTICLE_MASS = 1u << 4,      /* batch.inverse_mass[]; otherwise scene.inverse_mass for all */
-    MOTUS_HAS_FORCES = 1u << 5,             /* batch.force[][]: accumulated forces, springs add to them */
-    MOTUS_HAS_QUADRATIC_DRAG = 1u << 6,     /* scene.quadratic_drag */
-    MOTUS_HAS_ATTRACTOR = 1u << 7,          /* scene.attractor, scene.attractor_strength */
-    MOTUS_HAS_BOUNDS = 1u << 8              /* scene.bounds_min, bounds_max, restitution */
-};
-#define MOTUS__HAS_KNOWN ((1u << 9) - 1)
-
-typedef struct motus_scene {
-    unsigned has;                 /* MOTUS_HAS_* of what the scene has; other fields are ignored */
-    motus_method method;          /* MOTUS_SEMI_IMPLICIT_EULER (0) or MOTUS_EXPLICIT_EULER */
-    motus_real gravity[3];        /* uniform acceleration, m/s^2 (z unused in 2D) */
-    motus_real linear_drag;       /* k >= 0, 1/s */
-    motus_real quadratic_drag;    /* c >= 0, 1/m */
-    motus_real damping;           /* in [0, 1]: velocity kept per step, or per second */
-    motus_real inverse_mass;      /* >= 0, every particle's without MOTUS_HAS_PARTICLE_MASS (0: immovable) */
-    motus_real attractor[3];      /* position */
-    motus_real attractor_strength; /* mu = G*M >= 0, m^3/s^2 */
-    motus_real bounds_min[3], bounds_max[3]; /* the box particles stay in */
-    motus_real restitution;       /* in [0, 1]: speed kept through a bounce */
-} motus_scene;
-
-typedef struct motus_batch {
-    int dimensions;             /* 2 or 3 */
-    motus_real *position[3];    /* x[], y[] (, z[]) */
-    motus_real *velocity[3];
-    motus_real *force[3];         /* with MOTUS_HAS_FORCES, else unused (may be NULL) */
-    motus_real *inverse_mass;     /* with MOTUS_HAS_PARTICLE_MASS, else unused (may be NULL) */
-} motus_batch;
+#if defined(__GNUC__) || defined(__clang__)
+#define MOTUS__KI static inline __attribute__((always_inline))
+#else
+#define MOTUS__KI static inline
+#endif
 
 /* ---- lanes: a vector of motus_real where the compiler has vector extensions, one value elsewhere ---- */
 #ifndef MOTUS_SIMD_BYTES
@@ -1486,7 +1159,7 @@ typedef struct motus_batch {
 #elif defined(__AVX__)
 #define MOTUS_SIMD_BYTES 32
 #else
-#define MOTUS_SIMD_BYTES 16 /* SSE2 and NEON: every x86-64 and arm64 */
+#define MOTUS_SIMD_BYTES 16
 #endif
 #endif
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(MOTUS_NO_SIMD) && MOTUS_SIMD_BYTES > 0
@@ -1497,33 +1170,26 @@ typedef int64_t motus__mask __attribute__((vector_size(MOTUS_SIMD_BYTES)));
 typedef int32_t motus__mask __attribute__((vector_size(MOTUS_SIMD_BYTES)));
 #endif
 typedef motus_real motus__lane __attribute__((vector_size(MOTUS_SIMD_BYTES)));
-/* The same, for loads and stores at any motus_real boundary; a vector of motus_real may alias the
-   motus_real arrays it is read from (memcpy would alias everything and force pointer reloads). */
 typedef motus_real motus__lane_unaligned __attribute__((vector_size(MOTUS_SIMD_BYTES), aligned(sizeof(motus_real))));
 #define MOTUS__LANES ((int)(MOTUS_SIMD_BYTES / sizeof(motus_real)))
-#if defined(__SSE2__) && !defined(MOTUS_SQRT_CUSTOM) && (MOTUS_SIMD_BYTES == 16 || (MOTUS_SIMD_BYTES == 32 && defined(__AVX__)) || (MOTUS_SIMD_BYTES == 64 && defined(__AVX512F__)))
+/* The hardware's vector square root, correctly rounded like sqrtf/sqrt. Through the compilers' builtins
+   (GCC and Clang name them alike) rather than <immintrin.h>, which takes longer to parse than the engine
+   to compile at 16 and 32 bytes; AVX-512 builds include the header. */
+#if defined(__SSE2__) && !defined(MOTUS_SQRT_CUSTOM)
+#if MOTUS_SIMD_BYTES == 16 && defined(MOTUS_DOUBLE)
+#define MOTUS__VECTOR_SQRT(x) __builtin_ia32_sqrtpd(x)
+#elif MOTUS_SIMD_BYTES == 16
+#define MOTUS__VECTOR_SQRT(x) __builtin_ia32_sqrtps(x)
+#elif MOTUS_SIMD_BYTES == 32 && defined(__AVX__) && defined(MOTUS_DOUBLE)
+#define MOTUS__VECTOR_SQRT(x) __builtin_ia32_sqrtpd256(x)
+#elif MOTUS_SIMD_BYTES == 32 && defined(__AVX__)
+#define MOTUS__VECTOR_SQRT(x) __builtin_ia32_sqrtps256(x)
+#elif MOTUS_SIMD_BYTES == 64 && defined(__AVX512F__)
 #include <immintrin.h>
-#ifdef MOTUS_DOUBLE
-#if MOTUS_SIMD_BYTES == 16
-#define MOTUS__X86_SQRT _mm_sqrt_pd
-#define MOTUS__X86_VECTOR __m128d
-#elif MOTUS_SIMD_BYTES == 32
-#define MOTUS__X86_SQRT _mm256_sqrt_pd
-#define MOTUS__X86_VECTOR __m256d
-#else /* maskz: gcc 12's plain _mm512_sqrt_pd trips -Wmaybe-uninitialized in its own header */
-#define MOTUS__X86_SQRT(x) _mm512_maskz_sqrt_pd((__mmask8)0xFF, x)
-#define MOTUS__X86_VECTOR __m512d
-#endif
+#ifdef MOTUS_DOUBLE /* maskz: gcc 12's plain _mm512_sqrt_pd trips -Wmaybe-uninitialized in its own header */
+#define MOTUS__VECTOR_SQRT(x) (motus__lane) _mm512_maskz_sqrt_pd((__mmask8)0xFF, (__m512d)(x))
 #else
-#if MOTUS_SIMD_BYTES == 16
-#define MOTUS__X86_SQRT _mm_sqrt_ps
-#define MOTUS__X86_VECTOR __m128
-#elif MOTUS_SIMD_BYTES == 32
-#define MOTUS__X86_SQRT _mm256_sqrt_ps
-#define MOTUS__X86_VECTOR __m256
-#else
-#define MOTUS__X86_SQRT(x) _mm512_maskz_sqrt_ps((__mmask16)0xFFFF, x)
-#define MOTUS__X86_VECTOR __m512
+#define MOTUS__VECTOR_SQRT(x) (motus__lane) _mm512_maskz_sqrt_ps((__mmask16)0xFFFF, (__m512)(x))
 #endif
 #endif
 #endif
@@ -1534,7 +1200,7 @@ typedef motus_real motus__lane;
 #define MOTUS__LANES 1
 #endif
 
-MOTUS__INLINE motus__lane motus__splat(motus_real value) {
+MOTUS__KI motus__lane motus__splat(motus_real value) {
 #if MOTUS__VECTOR
     const motus__lane zero = {0};
     return value - zero; /* a broadcast; v - (+0) is v exactly, signed zeros included */
@@ -1542,47 +1208,49 @@ MOTUS__INLINE motus__lane motus__splat(motus_real value) {
     return value;
 #endif
 }
-/* Loads n <= MOTUS__LANES values (the rest 0) from possibly unaligned memory; stores n back. */
-MOTUS__INLINE motus__lane motus__load(const motus_real *from, int n) {
+/* n <= MOTUS__LANES values, `stride` reals apart; lanes past n repeat the last value, so that they compute
+   what a real particle computes (zeros would be phantom particles at the origin, where an attractor may
+   sit). */
+MOTUS__KI motus__lane motus__load(const motus_real *from, ptrdiff_t stride, int n) {
 #if MOTUS__VECTOR
-    motus__lane lanes = motus__splat(0);
-    int i;
-    if (n == MOTUS__LANES) return *(const motus__lane_unaligned *)from;
-    for (i = 0; i < n; ++i) lanes[i] = from[i];
+    motus__lane lanes;
+    int l;
+    if (stride == 1 && n == MOTUS__LANES) return *(const motus__lane_unaligned *)from;
+    for (l = 0; l < MOTUS__LANES; ++l) lanes[l] = from[(l < n ? l : n - 1) * stride];
     return lanes;
 #else
     (void)n;
+    (void)stride;
     return *from;
 #endif
 }
-MOTUS__INLINE void motus__store(motus_real *to, motus__lane lanes, int n) {
+MOTUS__KI void motus__store(motus_real *to, motus__lane lanes, ptrdiff_t stride, int n) {
 #if MOTUS__VECTOR
-    int i;
-    if (n == MOTUS__LANES) {
+    int l;
+    if (stride == 1 && n == MOTUS__LANES) {
         *(motus__lane_unaligned *)to = lanes;
         return;
     }
-    for (i = 0; i < n; ++i) to[i] = lanes[i];
+    for (l = 0; l < n; ++l) to[l * stride] = lanes[l];
 #else
     (void)n;
+    (void)stride;
     *to = lanes;
 #endif
 }
-MOTUS__INLINE motus__lane motus__sqrt(motus__lane x) {
-#if MOTUS__VECTOR && defined(MOTUS__X86_SQRT)
-    /* The hardware's vector square root: correctly rounded, like sqrtf/sqrt, so the lanes agree with the
-       scalar path bit for bit (a loop of sqrtf stays scalar while errno is on). */
-    return (motus__lane)MOTUS__X86_SQRT((MOTUS__X86_VECTOR)x);
+MOTUS__KI motus__lane motus__sqrt(motus__lane x) {
+#if MOTUS__VECTOR && defined(MOTUS__VECTOR_SQRT)
+    return MOTUS__VECTOR_SQRT(x);
 #elif MOTUS__VECTOR
-    int i;
-    for (i = 0; i < MOTUS__LANES; ++i) x[i] = MOTUS_SQRT(x[i]);
+    int l;
+    for (l = 0; l < MOTUS__LANES; ++l) x[l] = MOTUS_SQRT(x[l]);
     return x;
 #else
     return MOTUS_SQRT(x);
 #endif
 }
 /* mask ? a : b, lane by lane, without a branch. */
-MOTUS__INLINE motus__lane motus__select(motus__mask mask, motus__lane a, motus__lane b) {
+MOTUS__KI motus__lane motus__select(motus__mask mask, motus__lane a, motus__lane b) {
 #if MOTUS__VECTOR
     motus__mask bits_a, bits_b, chosen;
     motus__lane result;
@@ -1595,960 +1263,930 @@ MOTUS__INLINE motus__lane motus__select(motus__mask mask, motus__lane a, motus__
     return mask ? a : b;
 #endif
 }
-
-/* The step's constants, worked out once per call. */
-typedef struct motus__kernel_constants {
-    motus_real h, gravity[3], linear_drag, quadratic_drag, damping, rest_speed, inverse_mass;
-    motus_real attractor[3], attractor_strength, bounds_min[3], bounds_max[3], restitution;
-    int semi_implicit, has_gravity, has_linear_drag;
-} motus__kernel_constants;
-
-/* Kernel flags: the first six choose among the 64 fast kernels; GENERAL adds every other term. */
-#define MOTUS__K_GRAVITY 1
-#define MOTUS__K_LINEAR_DRAG 2
-#define MOTUS__K_DAMPING 4
-#define MOTUS__K_MASS 8
-#define MOTUS__K_FORCES 16
-#define MOTUS__K_BOUNDS 32
-#define MOTUS__K_GENERAL 64
-#define MOTUS__K_CHANGES_VELOCITY \
-    (MOTUS__K_GRAVITY | MOTUS__K_LINEAR_DRAG | MOTUS__K_DAMPING | MOTUS__K_FORCES | MOTUS__K_BOUNDS | MOTUS__K_GENERAL)
-#define MOTUS__K_DRY 128 /* MOTUS_CHECKED's dry run: compute and check, store nothing */
-
-/* The constants as lanes, made once per call so that the loop does not redo them (nor reload them: the
-   arrays it stores to could alias a motus_real in memory, but not these locals). */
-typedef struct motus__kernel_lanes {
-    motus__lane h, gravity[3], linear_drag, quadratic_drag, damping, rest_speed, inverse_mass;
-    motus__lane attractor[3], attractor_strength, bounds_min[3], bounds_max[3], bounce;
-    motus__mask semi_implicit, has_quadratic_drag, has_attractor, has_gravity, has_linear_drag;
-    motus__lane uniform_movable;
-} motus__kernel_lanes;
-
-/* Lane masks from a flag that is the same for every lane: all ones or all zeros. */
-MOTUS__INLINE motus__mask motus__mask_if(int flag) {
-    return motus__splat(flag ? MOTUS_R(1.0) : MOTUS_R(0.0)) != motus__splat(0);
-}
-
-/* The statements once per dimension with d a constant (the third only in 3D), so that x[d], v[d], a[d]
-   become registers rather than arrays on the stack. */
-#define MOTUS__EACH_DIM(...)                                                                                     \
-    do {                                                                                                       \
-        { const int d = 0; __VA_ARGS__ }                                                                       \
-        { const int d = 1; __VA_ARGS__ }                                                                       \
-        if (dims == 3) { const int d = 2; __VA_ARGS__ }                                                        \
-    } while (0)
-
-/* The arrays of a batch, copied into locals for the loop. */
-typedef struct motus__arrays {
-    motus_real *position[3], *velocity[3], *force[3], *inverse_mass;
-} motus__arrays;
-
-/* MOTUS__LANES particles starting at index i. dims and flags are constants where this is inlined:
-   the compiler drops every term, load and store the scene does not have. Adds the new positions to
-   check[]: a sum that is NaN or infinite if any new value is (a non-finite velocity always makes its
-   position non-finite too), one sum per dimension so that the additions do not wait on each other. */
-/* The dry run adds value - value: 0 where finite, NaN where not, a sum that cannot overflow on large finite
-   values (it has no values to look at afterwards, as the step has). */
-#define MOTUS__CHECK_ADD(sum, value) ((flags & MOTUS__K_DRY) ? (sum) + ((value) - (value)) : (sum) + (value))
-MOTUS__INLINE void motus__batch_lanes(const motus__arrays *b, int i, const motus__kernel_lanes *k,
-                                      const int dims, const int flags, motus__lane *check) {
-    const int n = MOTUS__LANES;
-    motus__lane x[3], v[3], a[3], inverse_mass;
-    const motus__lane h = k->h, zero = motus__splat(0);
-    inverse_mass = (flags & MOTUS__K_MASS) ? motus__load(b->inverse_mass + i, n) : k->inverse_mass;
-    MOTUS__EACH_DIM(
-        x[d] = motus__load(b->position[d] + i, n);
-        v[d] = motus__load(b->velocity[d] + i, n);
-        a[d] = (flags & MOTUS__K_FORCES) ? motus__load(b->force[d] + i, n) * inverse_mass : zero;
-        if (flags & MOTUS__K_GRAVITY) a[d] = a[d] + k->gravity[d];
-        if (flags & MOTUS__K_LINEAR_DRAG) a[d] = a[d] - v[d] * k->linear_drag;
-    );
-    if (flags & MOTUS__K_GENERAL) {
-        /* Terms the scene lacks are selected away: added as zero they would turn -0 into +0, and multiplied
-           by 0 an infinite intermediate into NaN. */
-        motus__lane speed, r[3], r2, drag, pull;
-        MOTUS__EACH_DIM(a[d] = motus__select(k->has_gravity, a[d] + k->gravity[d], a[d]);
-                        a[d] = motus__select(k->has_linear_drag, a[d] - v[d] * k->linear_drag, a[d]););
-        speed = v[0] * v[0] + v[1] * v[1];
-        if (dims == 3) speed = speed + v[2] * v[2];
-        drag = motus__select(k->has_quadratic_drag, k->quadratic_drag * motus__sqrt(speed), zero);
-        MOTUS__EACH_DIM(a[d] = motus__select(k->has_quadratic_drag, a[d] - v[d] * drag, a[d]);
-                        r[d] = x[d] - k->attractor[d];);
-        r2 = r[0] * r[0] + r[1] * r[1];
-        if (dims == 3) r2 = r2 + r[2] * r[2];
-        /* mu/(r2*sqrt(r2)) where r2 > 0, else no pull (that lane's division by zero is discarded) */
-        pull = motus__select((r2 > zero) & k->has_attractor, k->attractor_strength / (r2 * motus__sqrt(r2)), zero);
-        MOTUS__EACH_DIM(a[d] = motus__select(k->has_attractor, a[d] - r[d] * pull, a[d]););
-    }
-    if (flags & MOTUS__K_MASS) { /* immovable particles: no acceleration (a NaN passes on) */
-        motus__lane movable = motus__select(inverse_mass != zero, motus__splat(1), zero);
-        MOTUS__EACH_DIM(a[d] = a[d] * movable;);
-        MOTUS__EACH_DIM(check[d] = MOTUS__CHECK_ADD(check[d], inverse_mass);); /* a NaN mass shows even without forces */
-    } else if (flags & MOTUS__K_GENERAL) { /* a uniform inverse mass of 0 comes here: nothing accelerates */
-        MOTUS__EACH_DIM(a[d] = a[d] * k->uniform_movable;);
-    }
-    MOTUS__EACH_DIM(
-        motus__lane old_velocity = v[d];
-        v[d] = v[d] + a[d] * h;
-        if (flags & MOTUS__K_GENERAL) /* explicit Euler moves with the old velocity */
-            x[d] = x[d] + motus__select(k->semi_implicit, v[d], old_velocity) * h;
-        else
-            x[d] = x[d] + v[d] * h;
-        if (flags & MOTUS__K_DAMPING) { /* as motus__damp: slow components to a zero of their sign */
-            v[d] = v[d] * k->damping;
-            v[d] = motus__select((v[d] < k->rest_speed) & (v[d] > -k->rest_speed), v[d] * zero, v[d]);
-        }
-        /* Checked before the bounds, whose clamp would turn an infinite position into the wall; explicit
-           Euler's new velocity does not reach its position, so the general kernel adds it too. */
-        check[d] = MOTUS__CHECK_ADD(check[d], x[d]);
-        if (flags & MOTUS__K_GENERAL) check[d] = MOTUS__CHECK_ADD(check[d], v[d]);
-        if (flags & MOTUS__K_BOUNDS) { /* as motus_particle_bounce: mirror, bounce, then clamp */
-            motus__mask below = x[d] < k->bounds_min[d], above;
-            /* Clamped only where the step left it finite: an infinite position must stay infinite for the
-               check, but one the mirror itself overflows (walls near the maximum) is clamped, as
-               motus_particle_bounce does. */
-            const motus__mask finite = (motus__mask)(x[d] >= motus__splat(-MOTUS__REAL_MAX)) &
-                                       (motus__mask)(x[d] <= motus__splat(MOTUS__REAL_MAX));
-            x[d] = motus__select(below, k->bounds_min[d] + (k->bounds_min[d] - x[d]), x[d]);
-            v[d] = motus__select(below, v[d] * k->bounce, v[d]);
-            above = x[d] > k->bounds_max[d];
-            x[d] = motus__select(above, k->bounds_max[d] - (x[d] - k->bounds_max[d]), x[d]);
-            v[d] = motus__select(above, v[d] * k->bounce, v[d]);
-            x[d] = motus__select((x[d] < k->bounds_min[d]) & finite, k->bounds_min[d], x[d]);
-            x[d] = motus__select((x[d] > k->bounds_max[d]) & finite, k->bounds_max[d], x[d]);
-        }
-        if (!(flags & MOTUS__K_DRY)) {
-            motus__store(b->position[d] + i, x[d], n);
-            /* A kernel with nothing that changes velocities (drift, or masses with no force) does not store
-               them: a third less memory traffic. The stepper's v + 0 would turn a -0 into +0; that is all. */
-            if (flags & MOTUS__K_CHANGES_VELOCITY) motus__store(b->velocity[d] + i, v[d], n);
-        }
-    );
-}
-
-/* n < MOTUS__LANES particles at index i of `arrays`, copied into the buffers of `partial` (zero padded) when
-   `in`, or back (positions and velocities) when not. */
-MOTUS_API void motus__partial_copy(const motus__arrays *arrays, int i, const motus__arrays *partial, int n, int dims,
-                                   int flags, int in) {
-    int j, d;
-    for (j = 0; j < MOTUS__LANES; ++j) {
-        const int inside = j < n;
-        for (d = 0; d < dims; ++d) {
-            if (in) {
-                partial->position[d][j] = inside ? arrays->position[d][i + j] : 0;
-                partial->velocity[d][j] = inside ? arrays->velocity[d][i + j] : 0;
-                if (flags & MOTUS__K_FORCES) partial->force[d][j] = inside ? arrays->force[d][i + j] : 0;
-            } else if (inside) {
-                arrays->position[d][i + j] = partial->position[d][j];
-                arrays->velocity[d][i + j] = partial->velocity[d][j];
-            }
-        }
-        if (in && (flags & MOTUS__K_MASS)) partial->inverse_mass[j] = inside ? arrays->inverse_mass[i + j] : 0;
-    }
-}
-
-/* The range in whole vectors, then one partial vector for the rest. Returns nonzero if the sum of the new
-   state is not finite (then motus__batch_state_broken looks closer). */
-MOTUS__INLINE int motus__batch_range(const motus_batch *batch, int first, int count, const motus__kernel_constants *c,
-                                     const int dims, const int flags) {
-    motus__kernel_lanes k;
-    motus__arrays arrays, partial;
-    motus_real buffer[10][MOTUS__LANES];
-    motus__lane check[3];
-    motus_real sum = 0;
-    int i = first, end = first + count, lane, d, head, whole_end, part, part_start[2], part_length[2];
-    k.h = motus__splat(c->h);
-    k.linear_drag = motus__splat(c->linear_drag);
-    k.quadratic_drag = motus__splat(c->quadratic_drag);
-    k.damping = motus__splat(c->damping);
-    k.rest_speed = motus__splat(c->rest_speed);
-    k.inverse_mass = motus__splat(c->inverse_mass);
-    k.attractor_strength = motus__splat(c->attractor_strength);
-    k.bounce = motus__splat(-c->restitution);
-    k.semi_implicit = motus__mask_if(c->semi_implicit);
-    k.has_quadratic_drag = motus__mask_if(c->quadratic_drag != 0);
-    k.has_attractor = motus__mask_if(c->attractor_strength != 0);
-    k.has_gravity = motus__mask_if(c->has_gravity);
-    k.has_linear_drag = motus__mask_if(c->has_linear_drag);
-    k.uniform_movable = motus__splat(c->inverse_mass != 0 ? MOTUS_R(1.0) : MOTUS_R(0.0));
-    arrays.inverse_mass = batch->inverse_mass;
-    for (d = 0; d < 3; ++d) {
-        arrays.position[d] = batch->position[d];
-        arrays.velocity[d] = batch->velocity[d];
-        arrays.force[d] = batch->force[d];
-        k.gravity[d] = motus__splat(c->gravity[d]);
-        k.attractor[d] = motus__splat(c->attractor[d]);
-        k.bounds_min[d] = motus__splat(c->bounds_min[d]);
-        k.bounds_max[d] = motus__splat(c->bounds_max[d]);
-        partial.position[d] = buffer[d];
-        partial.velocity[d] = buffer[3 + d];
-        partial.force[d] = buffer[6 + d];
-    }
-    partial.inverse_mass = buffer[9];
-    check[0] = check[1] = check[2] = motus__splat(0);
-    head = MOTUS__VECTOR ? (int)(((uintptr_t)0 - (uintptr_t)(arrays.position[0] + i)) % MOTUS_SIMD_BYTES / sizeof(motus_real)) : 0;
-    /* Whole vectors in place, starting on a vector boundary of the first position array (stores that
-       straddle cache lines cost up to twice as much); then the partial vectors at either end, through a
-       zero-padded copy, from one place so that each kernel's body is compiled twice, not three times. */
-    if (!(head > 0 && head < end - i)) head = 0;
-    whole_end = i + head + (end - i - head) / MOTUS__LANES * MOTUS__LANES;
-    for (i += head; i < whole_end; i += MOTUS__LANES) motus__batch_lanes(&arrays, i, &k, dims, flags, check);
-    part_start[0] = first;
-    part_length[0] = head;
-    part_start[1] = whole_end;
-    part_length[1] = end - whole_end;
-    for (part = 0; part < 2; ++part) {
-        if (part_length[part] == 0) continue;
-        motus__partial_copy(&arrays, part_start[part], &partial, part_length[part], dims, flags, 1);
-        motus__batch_lanes(&partial, 0, &k, dims, flags, check);
-        if (!(flags & MOTUS__K_DRY))
-            motus__partial_copy(&arrays, part_start[part], &partial, part_length[part], dims, flags, 0);
-    }
-    check[0] = check[0] + check[1] + check[2];
+MOTUS__KI motus_real motus__lane_sum(motus__lane x) {
 #if MOTUS__VECTOR
-    for (lane = 0; lane < MOTUS__LANES; ++lane) sum += check[0][lane];
+    motus_real sum = 0;
+    int l;
+    for (l = 0; l < MOTUS__LANES; ++l) sum += x[l];
+    return sum;
 #else
-    (void)lane;
-    sum = check[0];
+    return x;
 #endif
-    return !motus_real_is_finite(sum);
 }
 
-#define MOTUS__KERNEL_CASE(dims, flags)                                                                          \
-    case (flags): return motus__batch_range(b, first, count, k, dims, flags);
-#define MOTUS__KERNEL_CASES_8(dims, base)                                                                        \
-    MOTUS__KERNEL_CASE(dims, (base) + 0) MOTUS__KERNEL_CASE(dims, (base) + 1) MOTUS__KERNEL_CASE(dims, (base) + 2)  \
-    MOTUS__KERNEL_CASE(dims, (base) + 3) MOTUS__KERNEL_CASE(dims, (base) + 4) MOTUS__KERNEL_CASE(dims, (base) + 5)  \
-    MOTUS__KERNEL_CASE(dims, (base) + 6) MOTUS__KERNEL_CASE(dims, (base) + 7)
-#define MOTUS__GENERAL (MOTUS__K_GENERAL | MOTUS__K_DAMPING | MOTUS__K_BOUNDS)
-/* One function per dimension count, each with its 68 kernels: the 64 fast ones and the general one for the
-   4 combinations of the two optional arrays. */
-#define MOTUS__KERNEL_DISPATCH(name, dims)                                                                       \
-    MOTUS_API int name(const motus_batch *b, int first, int count, const motus__kernel_constants *k, int flags) {  \
-        switch (flags) {                                                                                         \
-            MOTUS__KERNEL_CASES_8(dims, 0)                                                                       \
-            MOTUS__KERNEL_CASES_8(dims, 8)                                                                       \
-            MOTUS__KERNEL_CASES_8(dims, 16)                                                                      \
-            MOTUS__KERNEL_CASES_8(dims, 24)                                                                      \
-            MOTUS__KERNEL_CASES_8(dims, 32)                                                                      \
-            MOTUS__KERNEL_CASES_8(dims, 40)                                                                      \
-            MOTUS__KERNEL_CASES_8(dims, 48)                                                                      \
-            MOTUS__KERNEL_CASES_8(dims, 56)                                                                      \
-            MOTUS__KERNEL_CASE(dims, MOTUS__GENERAL)                                                             \
-            MOTUS__KERNEL_CASE(dims, MOTUS__GENERAL | MOTUS__K_MASS)                                             \
-            MOTUS__KERNEL_CASE(dims, MOTUS__GENERAL | MOTUS__K_FORCES)                                           \
-            MOTUS__KERNEL_CASE(dims, MOTUS__GENERAL | MOTUS__K_MASS | MOTUS__K_FORCES)                           \
-        default: return -1;                                                                                      \
-        }                                                                                                        \
+/* ---- the job: the scene and the state as the kernels read them, made once per call ---- */
+enum {
+    MOTUS__T_GRAVITY = 1 << 0,
+    MOTUS__T_LINEAR_DRAG = 1 << 1,
+    MOTUS__T_QUADRATIC_DRAG = 1 << 2,
+    MOTUS__T_ATTRACTOR = 1 << 3,
+    MOTUS__T_FORCES = 1 << 4,   /* state.force[] */
+    MOTUS__T_MASS = 1 << 5,     /* state.inverse_mass[] */
+    MOTUS__T_DAMPING = 1 << 6,
+    MOTUS__T_BOUNDS = 1 << 7,
+    MOTUS__T_COUPLED = 1 << 8,  /* springs or a callback: stage forces in scratch */
+    MOTUS__T_DRY = 1 << 9       /* MOTUS_CHECKED's run that stores nothing */
+};
+
+typedef struct motus__job {
+    unsigned terms;
+    int substeps, record_stage, apply_damping;
+    motus_real substep_dt; /* h as a number, for the callback's stage times */
+    ptrdiff_t stride;
+    motus_real *x[3], *v[3];
+    const motus_real *f[3], *inverse_mass;
+    /* scene terms */
+    motus__lane gravity[3], linear_drag, quadratic_drag, attractor[3], attractor_strength, uniform_inverse_mass;
+    motus__lane kept, rest_speed, bounds_min[3], bounds_max[3], bounce;
+    /* step constants: h and the fractions of it the methods use */
+    motus__lane h, half_h, half_h2, sixth_h, fr_drift_out, fr_kick_out, fr_drift_in, fr_kick_in;
+    motus__lane exact_decay, exact_c1, exact_c2;
+    /* coupled: the recorded stage state and the stage forces, plain arrays over the whole state */
+    motus_real *stage_x[3], *stage_v[3];
+    const motus_real *stage_force[MOTUS__MAX_EVALUATIONS][3];
+} motus__job;
+
+/* The terms with a square root and a division, out of line: a call per group of particles is small next
+   to them, and it keeps every kernel small enough to compile fast (the scenes without them do not pay). */
+MOTUS__KI void motus__costly_terms(const motus__job *j, const motus__lane *x, const motus__lane *v, motus__lane *a,
+                                   const int dims) {
+    const unsigned t = j->terms;
+    const motus__lane zero = motus__splat(0);
+    int d;
+    if (t & MOTUS__T_QUADRATIC_DRAG) {
+        motus__lane speed2 = v[0] * v[0] + v[1] * v[1], drag;
+        if (dims == 3) speed2 = speed2 + v[2] * v[2];
+        drag = j->quadratic_drag * motus__sqrt(speed2);
+        for (d = 0; d < dims; ++d) a[d] = a[d] - v[d] * drag;
     }
-MOTUS__KERNEL_DISPATCH(motus__batch_dispatch2, 2)
-MOTUS__KERNEL_DISPATCH(motus__batch_dispatch3, 3)
-#undef MOTUS__KERNEL_DISPATCH
-#ifdef MOTUS_CHECKED
-/* The step without its stores, through the general kernel: it computes every term with neutral values for
-   what the scene lacks, so it gives the values any kernel gives. Nonzero if one would not be finite. Only
-   checked builds compile these 8 kernels. */
-MOTUS_API int motus__batch_dry_run(const motus_batch *b, int first, int count, const motus__kernel_constants *k,
-                                   int flags) {
-    const int dry = MOTUS__GENERAL | MOTUS__K_DRY;
-    switch ((flags & (MOTUS__K_MASS | MOTUS__K_FORCES)) + (b->dimensions == 3 ? 1 : 0)) {
-    case 0: return motus__batch_range(b, first, count, k, 2, dry);
-    case 1: return motus__batch_range(b, first, count, k, 3, dry);
-    case MOTUS__K_MASS: return motus__batch_range(b, first, count, k, 2, dry | MOTUS__K_MASS);
-    case MOTUS__K_MASS + 1: return motus__batch_range(b, first, count, k, 3, dry | MOTUS__K_MASS);
-    case MOTUS__K_FORCES: return motus__batch_range(b, first, count, k, 2, dry | MOTUS__K_FORCES);
-    case MOTUS__K_FORCES + 1: return motus__batch_range(b, first, count, k, 3, dry | MOTUS__K_FORCES);
-    case MOTUS__K_MASS + MOTUS__K_FORCES: return motus__batch_range(b, first, count, k, 2, dry | MOTUS__K_MASS | MOTUS__K_FORCES);
-    default: return motus__batch_range(b, first, count, k, 3, dry | MOTUS__K_MASS | MOTUS__K_FORCES);
+    if (t & MOTUS__T_ATTRACTOR) {
+        /* mu*r/|r|^3 = mu*u/(s^2*|u|^3) with s = max|r_d| and u = r/s (|u| in [1, sqrt(3)]): neither r^2 nor
+           |r|^3 is formed, so a pull that is representable is not lost to their overflow (float's r^2
+           overflows at |r| = 1.8e19 m) or underflow. No pull at the attractor itself. */
+        motus__lane r[3], s, inverse_s, u2, pull;
+        motus__mask at_centre;
+        for (d = 0; d < dims; ++d) r[d] = x[d] - j->attractor[d];
+        s = motus__select(r[0] < zero, -r[0], r[0]);
+        for (d = 1; d < dims; ++d) {
+            const motus__lane m = motus__select(r[d] < zero, -r[d], r[d]);
+            s = motus__select(m > s, m, s);
+        }
+        at_centre = s == zero;
+        inverse_s = motus__splat(1) / motus__select(at_centre, motus__splat(1), s);
+        u2 = zero;
+        for (d = 0; d < dims; ++d) {
+            r[d] = r[d] * inverse_s;
+            u2 = u2 + r[d] * r[d];
+        }
+        pull = j->attractor_strength * inverse_s * inverse_s / (u2 * motus__sqrt(u2));
+        pull = motus__select(at_centre, zero, pull);
+        for (d = 0; d < dims; ++d) a[d] = a[d] - r[d] * pull;
     }
 }
+#if defined(__GNUC__) || defined(__clang__)
+#define MOTUS__NOINLINE __attribute__((noinline))
+#else
+#define MOTUS__NOINLINE
 #endif
-#undef MOTUS__KERNEL_CASES_8
-#undef MOTUS__KERNEL_CASE
-
-MOTUS_API int motus__scene_damping_flags(unsigned has) {
-    return (int)(has & (MOTUS_HAS_DAMPING_PER_STEP | MOTUS_HAS_DAMPING_PER_SECOND));
+static MOTUS__NOINLINE void motus__costly_terms_2(const motus__job *j, const motus__lane *x, const motus__lane *v,
+                                                  motus__lane *a) {
+    motus__costly_terms(j, x, v, a, 2);
+}
+static MOTUS__NOINLINE void motus__costly_terms_3(const motus__job *j, const motus__lane *x, const motus__lane *v,
+                                                  motus__lane *a) {
+    motus__costly_terms(j, x, v, a, 3);
 }
 
-/* Checks the scene against the batch: known features, a supported method, the arrays it needs, parameters
-   in range. O(1); run by every step. */
-MOTUS_API motus_result motus_scene_check(const motus_scene *scene, const motus_batch *batch) {
-    const unsigned has = scene ? scene->has : 0;
-    int d, dims;
-    if (!scene || !batch) return MOTUS_ERROR_NULL_POINTER;
-    dims = batch->dimensions;
-    if ((has & ~MOTUS__HAS_KNOWN) || (dims != 2 && dims != 3) ||
-        motus__scene_damping_flags(has) == (MOTUS_HAS_DAMPING_PER_STEP | MOTUS_HAS_DAMPING_PER_SECOND))
-        return MOTUS_ERROR_INVALID_SCENE;
-    if (scene->method != MOTUS_SEMI_IMPLICIT_EULER && scene->method != MOTUS_EXPLICIT_EULER)
-        return MOTUS_ERROR_UNSUPPORTED;
+/* The acceleration at a stage, from the terms that do not couple particles, plus the stage's coupled force
+   (springs, callback) when there is one. base = F*(1/m) of the accumulated force, or 0. Terms that are
+   off are skipped, not added as zero (which would turn a -0 into +0): the same bits whatever path. */
+MOTUS__KI void motus__acceleration(const motus__job *j, const motus__lane *x, const motus__lane *v,
+                                   const motus__lane *base, motus__lane inverse_mass, motus__mask movable,
+                                   motus__lane *a, const int dims, const int coupled, int stage, int i, int n) {
+    const unsigned t = j->terms;
+    const motus__lane zero = motus__splat(0);
+    int d;
     for (d = 0; d < dims; ++d) {
-        if (!batch->position[d] || !batch->velocity[d]) return MOTUS_ERROR_NULL_POINTER;
-        if ((has & MOTUS_HAS_FORCES) && !batch->force[d]) return MOTUS_ERROR_NULL_POINTER;
-        if ((has & MOTUS_HAS_GRAVITY) && !motus_real_is_finite(scene->gravity[d])) return MOTUS_ERROR_NOT_FINITE;
-        if ((has & MOTUS_HAS_ATTRACTOR) && !motus_real_is_finite(scene->attractor[d])) return MOTUS_ERROR_NOT_FINITE;
-        if (has & MOTUS_HAS_BOUNDS) {
-            if (!motus_real_is_finite(scene->bounds_min[d]) || !motus_real_is_finite(scene->bounds_max[d]))
-                return MOTUS_ERROR_NOT_FINITE;
-            if (!(scene->bounds_min[d] <= scene->bounds_max[d])) return MOTUS_ERROR_INVALID_SCENE;
-        }
+        a[d] = base[d];
+        if (t & MOTUS__T_GRAVITY) a[d] = a[d] + j->gravity[d];
+        if (t & MOTUS__T_LINEAR_DRAG) a[d] = a[d] - v[d] * j->linear_drag;
     }
-    if ((has & MOTUS_HAS_PARTICLE_MASS) && !batch->inverse_mass) return MOTUS_ERROR_NULL_POINTER;
-    if (!(has & MOTUS_HAS_PARTICLE_MASS)) {
-        if (!motus_real_is_finite(scene->inverse_mass)) return MOTUS_ERROR_NOT_FINITE;
-        if (scene->inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
+    if (t & (MOTUS__T_QUADRATIC_DRAG | MOTUS__T_ATTRACTOR)) {
+        if (dims == 2) motus__costly_terms_2(j, x, v, a);
+        else motus__costly_terms_3(j, x, v, a);
     }
-    if (((has & MOTUS_HAS_LINEAR_DRAG) && !motus_real_is_finite(scene->linear_drag)) ||
-        ((has & MOTUS_HAS_QUADRATIC_DRAG) && !motus_real_is_finite(scene->quadratic_drag)) ||
-        ((has & MOTUS_HAS_ATTRACTOR) && !motus_real_is_finite(scene->attractor_strength)))
-        return MOTUS_ERROR_NOT_FINITE;
-    if (((has & MOTUS_HAS_LINEAR_DRAG) && scene->linear_drag < 0) ||
-        ((has & MOTUS_HAS_QUADRATIC_DRAG) && scene->quadratic_drag < 0) ||
-        ((has & MOTUS_HAS_ATTRACTOR) && scene->attractor_strength < 0))
-        return MOTUS_ERROR_INVALID_FORCES;
-    if (motus__scene_damping_flags(has) && !motus__damping_is_valid(scene->damping)) return MOTUS_ERROR_INVALID_DAMPING;
-    if ((has & MOTUS_HAS_BOUNDS) && !motus_real_is_finite(scene->restitution)) return MOTUS_ERROR_NOT_FINITE;
-    if ((has & MOTUS_HAS_BOUNDS) && !motus__damping_is_valid(scene->restitution)) return MOTUS_ERROR_INVALID_DAMPING;
-    return MOTUS_OK;
+    if (coupled && (t & MOTUS__T_COUPLED))
+        for (d = 0; d < dims; ++d) a[d] = a[d] + motus__load(j->stage_force[stage][d] + i, 1, n) * inverse_mass;
+    if (t & MOTUS__T_MASS) /* immovable: no acceleration (a NaN still shows in the check) */
+        for (d = 0; d < dims; ++d) a[d] = motus__select(movable, a[d], zero);
 }
 
-/* The first particle in [first, first + count) with a NaN or Inf in a field the scene uses, or a negative
-   inverse mass: MOTUS_OK, or the result with *bad_index and *bad_field ("position", "velocity", "force",
-   "inverse_mass") set. Either output pointer may be NULL. Reads the range once. */
-MOTUS_API motus_result motus_batch_check(const motus_scene *scene, const motus_batch *batch, int first, int count,
-                                         int *bad_index, const char **bad_field) {
-    motus_result result = motus_scene_check(scene, batch);
-    int i, d;
-    if (result != MOTUS_OK) return result;
-    if (first < 0 || count < 0 || count > INT_MAX - first) return MOTUS_ERROR_INVALID_COUNT;
-    for (i = first; i < first + count; ++i) {
-        const char *field = NULL;
-        if ((scene->has & MOTUS_HAS_PARTICLE_MASS) && !motus_real_is_finite(batch->inverse_mass[i])) field = "inverse_mass";
-        for (d = 0; d < batch->dimensions && !field; ++d) {
-            if (!motus_real_is_finite(batch->position[d][i])) field = "position";
-            else if (!motus_real_is_finite(batch->velocity[d][i])) field = "velocity";
-            else if ((scene->has & MOTUS_HAS_FORCES) && !motus_real_is_finite(batch->force[d][i])) field = "force";
+/* One evaluation of the forces at stage `stage`. In a pass that records that stage (coupled scenes), the
+   stage's state is stored for the springs and the callback instead, and the method stops there: returns 1. */
+MOTUS__KI int motus__evaluate(const motus__job *j, int stage, const motus__lane *x, const motus__lane *v,
+                              const motus__lane *base, motus__lane inverse_mass, motus__mask movable, motus__lane *a,
+                              const int dims, const int coupled, int i, int n) {
+    int d;
+    if (coupled && j->record_stage == stage) {
+        for (d = 0; d < dims; ++d) {
+            motus__store(j->stage_x[d] + i, x[d], 1, n);
+            motus__store(j->stage_v[d] + i, v[d], 1, n);
         }
-        result = field ? MOTUS_ERROR_NOT_FINITE : MOTUS_OK;
-        if (!field && (scene->has & MOTUS_HAS_PARTICLE_MASS) && batch->inverse_mass[i] < 0) {
-            field = "inverse_mass";
-            result = MOTUS_ERROR_INVALID_MASS;
-        }
-        if (field) {
-            if (bad_index) *bad_index = i;
-            if (bad_field) *bad_field = field;
-            return result;
+        return 1;
+    }
+    motus__acceleration(j, x, v, base, inverse_mass, movable, a, dims, coupled, stage, i, n);
+    return 0;
+}
+#define MOTUS__EVALUATE(stage, xs, vs, a)                                                                        \
+    if (motus__evaluate(j, stage, xs, vs, base, inverse_mass, movable, a, dims, coupled, i, n)) return 1
+
+/* ---- the methods, one function each (see >>methods for the formulas, orders and limits) ----
+   x, v: the state, updated in place; each returns 1 if it stopped at a recorded stage. */
+#define MOTUS__METHOD_ARGS                                                                                       \
+    const motus__job *j, motus__lane *x, motus__lane *v, const motus__lane *base, motus__lane inverse_mass,      \
+        motus__mask movable, const int dims, const int coupled, int i, int n
+MOTUS__KI int motus__semi_implicit_euler(MOTUS__METHOD_ARGS) {
+    motus__lane a[3];
+    int d;
+    MOTUS__EVALUATE(0, x, v, a);
+    for (d = 0; d < dims; ++d) {
+        v[d] = v[d] + a[d] * j->h;
+        x[d] = x[d] + v[d] * j->h;
+    }
+    return 0;
+}
+MOTUS__KI int motus__explicit_euler(MOTUS__METHOD_ARGS) {
+    motus__lane a[3];
+    int d;
+    MOTUS__EVALUATE(0, x, v, a);
+    for (d = 0; d < dims; ++d) {
+        x[d] = x[d] + v[d] * j->h;
+        v[d] = v[d] + a[d] * j->h;
+    }
+    return 0;
+}
+MOTUS__KI int motus__position_verlet(MOTUS__METHOD_ARGS) {
+    motus__lane a[3];
+    int d;
+    for (d = 0; d < dims; ++d) x[d] = x[d] + v[d] * j->half_h;
+    MOTUS__EVALUATE(0, x, v, a);
+    for (d = 0; d < dims; ++d) {
+        v[d] = v[d] + a[d] * j->h;
+        x[d] = x[d] + v[d] * j->half_h;
+    }
+    return 0;
+}
+MOTUS__KI int motus__velocity_verlet(MOTUS__METHOD_ARGS) {
+    motus__lane a0[3], a1[3], predicted[3];
+    int d;
+    MOTUS__EVALUATE(0, x, v, a0);
+    for (d = 0; d < dims; ++d) {
+        x[d] = x[d] + v[d] * j->h + a0[d] * j->half_h2;
+        predicted[d] = v[d] + a0[d] * j->h;
+    }
+    MOTUS__EVALUATE(1, x, predicted, a1);
+    for (d = 0; d < dims; ++d) v[d] = v[d] + (a0[d] + a1[d]) * j->half_h;
+    return 0;
+}
+MOTUS__KI int motus__leapfrog(MOTUS__METHOD_ARGS) {
+    motus__lane a0[3], a1[3], predicted[3];
+    int d;
+    MOTUS__EVALUATE(0, x, v, a0);
+    for (d = 0; d < dims; ++d) {
+        v[d] = v[d] + a0[d] * j->half_h;
+        x[d] = x[d] + v[d] * j->h;
+        predicted[d] = v[d] + a0[d] * j->half_h;
+    }
+    MOTUS__EVALUATE(1, x, predicted, a1);
+    for (d = 0; d < dims; ++d) v[d] = v[d] + a1[d] * j->half_h;
+    return 0;
+}
+MOTUS__KI int motus__midpoint(MOTUS__METHOD_ARGS) {
+    motus__lane a0[3], a1[3], xm[3], vm[3];
+    int d;
+    MOTUS__EVALUATE(0, x, v, a0);
+    for (d = 0; d < dims; ++d) {
+        xm[d] = x[d] + v[d] * j->half_h;
+        vm[d] = v[d] + a0[d] * j->half_h;
+    }
+    MOTUS__EVALUATE(1, xm, vm, a1);
+    for (d = 0; d < dims; ++d) {
+        x[d] = x[d] + vm[d] * j->h;
+        v[d] = v[d] + a1[d] * j->h;
+    }
+    return 0;
+}
+MOTUS__KI int motus__rk4(MOTUS__METHOD_ARGS) {
+    motus__lane a[3], xs[3], vs[3], sum_v[3], sum_a[3];
+    const motus__lane two = motus__splat(2);
+    int d;
+    MOTUS__EVALUATE(0, x, v, a);
+    for (d = 0; d < dims; ++d) { /* k1 = (v, a1) */
+        sum_v[d] = v[d];
+        sum_a[d] = a[d];
+        xs[d] = x[d] + v[d] * j->half_h;
+        vs[d] = v[d] + a[d] * j->half_h;
+    }
+    MOTUS__EVALUATE(1, xs, vs, a);
+    for (d = 0; d < dims; ++d) { /* k2 = (vs, a2) */
+        sum_v[d] = sum_v[d] + vs[d] * two;
+        sum_a[d] = sum_a[d] + a[d] * two;
+        xs[d] = x[d] + vs[d] * j->half_h;
+        vs[d] = v[d] + a[d] * j->half_h;
+    }
+    MOTUS__EVALUATE(2, xs, vs, a);
+    for (d = 0; d < dims; ++d) { /* k3 */
+        sum_v[d] = sum_v[d] + vs[d] * two;
+        sum_a[d] = sum_a[d] + a[d] * two;
+        xs[d] = x[d] + vs[d] * j->h;
+        vs[d] = v[d] + a[d] * j->h;
+    }
+    MOTUS__EVALUATE(3, xs, vs, a);
+    for (d = 0; d < dims; ++d) { /* k4, then the weighted sum 1, 2, 2, 1 */
+        x[d] = x[d] + (sum_v[d] + vs[d]) * j->sixth_h;
+        v[d] = v[d] + (sum_a[d] + a[d]) * j->sixth_h;
+    }
+    return 0;
+}
+MOTUS__KI int motus__forest_ruth(MOTUS__METHOD_ARGS) {
+    motus__lane a[3];
+    int d;
+    for (d = 0; d < dims; ++d) x[d] = x[d] + v[d] * j->fr_drift_out;
+    MOTUS__EVALUATE(0, x, v, a);
+    for (d = 0; d < dims; ++d) {
+        v[d] = v[d] + a[d] * j->fr_kick_out;
+        x[d] = x[d] + v[d] * j->fr_drift_in;
+    }
+    MOTUS__EVALUATE(1, x, v, a);
+    for (d = 0; d < dims; ++d) {
+        v[d] = v[d] + a[d] * j->fr_kick_in;
+        x[d] = x[d] + v[d] * j->fr_drift_in;
+    }
+    MOTUS__EVALUATE(2, x, v, a);
+    for (d = 0; d < dims; ++d) {
+        v[d] = v[d] + a[d] * j->fr_kick_out;
+        x[d] = x[d] + v[d] * j->fr_drift_out;
+    }
+    return 0;
+}
+/* v = v0*e^-u + a*c1, x = x0 + v0*c1 + a*c2 (see >>methods): gravity and the accumulated force make a, the
+   linear drag is in the coefficients. */
+MOTUS__KI int motus__exact_linear_drag(MOTUS__METHOD_ARGS) {
+    const motus__lane zero = motus__splat(0);
+    int d;
+    (void)coupled;
+    (void)i;
+    (void)n;
+    (void)inverse_mass;
+    for (d = 0; d < dims; ++d) {
+        motus__lane a = base[d];
+        const motus__lane v0 = v[d];
+        if (j->terms & MOTUS__T_GRAVITY) a = a + j->gravity[d];
+        if (j->terms & MOTUS__T_MASS) a = motus__select(movable, a, zero);
+        v[d] = v0 * j->exact_decay + a * j->exact_c1;
+        x[d] = x[d] + v0 * j->exact_c1 + a * j->exact_c2;
+        if (j->terms & MOTUS__T_MASS) { /* immovable: drag does not act either; it drifts */
+            v[d] = motus__select(movable, v[d], v0);
+            x[d] = motus__select(movable, x[d], x[d] - v0 * j->exact_c1 + v0 * j->h);
         }
     }
-    return MOTUS_OK;
+    return 0;
 }
 
-/* Steps particles [first, first + count) of `batch` by dt through `scene` (see the top of this section).
-   Thread-safe for ranges that do not overlap. Release builds: on MOTUS_ERROR_NOT_FINITE the range was
-   written (the data had NaN/Inf, or overflowed); with MOTUS_CHECKED, bad data (MOTUS_ERROR_NOT_FINITE) and
-   overflow (MOTUS_ERROR_OVERFLOW) are found first and nothing is written. Every other error is found before
-   anything is written. */
-MOTUS_API motus_result motus_batch_step(const motus_scene *scene, const motus_batch *batch, int first, int count,
-                                        motus_real dt) {
-    motus__kernel_constants k;
-    motus_result result = motus_scene_check(scene, batch);
-    const unsigned has = scene ? scene->has : 0;
-    int flags = 0, d, broken;
-    if (result != MOTUS_OK) return result;
-    if (first < 0 || count < 0 || count > INT_MAX - first) return MOTUS_ERROR_INVALID_COUNT;
-    if (!motus__is_positive_finite(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
-#ifdef MOTUS_CHECKED
-    result = motus_batch_check(scene, batch, first, count, NULL, NULL);
-    if (result != MOTUS_OK) return result;
-#endif
-    if (count == 0) return MOTUS_OK;
-
-    /* Neutral values for what the scene lacks: the general kernel computes every term. */
-    k.h = dt;
-    k.linear_drag = k.quadratic_drag = k.attractor_strength = k.restitution = 0;
-    k.damping = 1;
-    k.rest_speed = 0; /* no flush without damping (the general kernel always "damps", by 1) */
-    k.semi_implicit = scene->method == MOTUS_SEMI_IMPLICIT_EULER;
-    k.has_gravity = k.has_linear_drag = 0;
-    k.inverse_mass = (has & MOTUS_HAS_PARTICLE_MASS) ? 0 : scene->inverse_mass;
-    for (d = 0; d < 3; ++d) {
-        k.gravity[d] = k.attractor[d] = 0;
-        k.bounds_min[d] = -(motus_real)HUGE_VAL;
-        k.bounds_max[d] = (motus_real)HUGE_VAL;
+/* The walls: past one, the position is mirrored back inside and that velocity component multiplied by
+   -restitution; a particle that overshot by more than the box is clamped to the wall (as
+   motus_particle_bounce). Only where the position is finite: an overflow must stay visible to the check. */
+MOTUS__KI void motus__walls(const motus__job *j, motus__lane *x, motus__lane *v, const int dims) {
+    int d;
+    for (d = 0; d < dims; ++d) {
+        const motus__mask finite = (motus__mask)(x[d] >= motus__splat(-MOTUS__REAL_MAX)) &
+                                   (motus__mask)(x[d] <= motus__splat(MOTUS__REAL_MAX));
+        motus__mask below = x[d] < j->bounds_min[d], above;
+        x[d] = motus__select(below, j->bounds_min[d] + (j->bounds_min[d] - x[d]), x[d]);
+        v[d] = motus__select(below, v[d] * j->bounce, v[d]);
+        above = x[d] > j->bounds_max[d];
+        x[d] = motus__select(above, j->bounds_max[d] - (x[d] - j->bounds_max[d]), x[d]);
+        v[d] = motus__select(above, v[d] * j->bounce, v[d]);
+        x[d] = motus__select((x[d] < j->bounds_min[d]) & finite, j->bounds_min[d], x[d]);
+        x[d] = motus__select((x[d] > j->bounds_max[d]) & finite, j->bounds_max[d], x[d]);
     }
-    /* Gravity and linear drag count as on only when not zero, as in motus_stepper_step. */
-    if (has & MOTUS_HAS_GRAVITY)
-        for (d = 0; d < batch->dimensions; ++d) {
-            k.gravity[d] = scene->gravity[d];
-            k.has_gravity |= scene->gravity[d] != 0;
-        }
-    if (has & MOTUS_HAS_LINEAR_DRAG) {
-        k.linear_drag = scene->linear_drag;
-        k.has_linear_drag = scene->linear_drag != 0;
-    }
-    if (has & MOTUS_HAS_QUADRATIC_DRAG) k.quadratic_drag = scene->quadratic_drag;
-    if (has & MOTUS_HAS_ATTRACTOR) {
-        for (d = 0; d < batch->dimensions; ++d) k.attractor[d] = scene->attractor[d];
-        k.attractor_strength = scene->attractor_strength;
-    }
-    if (has & MOTUS_HAS_DAMPING_PER_STEP) k.damping = scene->damping;
-    if (has & MOTUS_HAS_DAMPING_PER_SECOND) k.damping = MOTUS_POW(scene->damping, dt); /* as damp_per_second */
-    if (motus__scene_damping_flags(has)) k.rest_speed = (motus_real)(MOTUS_REST_SPEED);
-    if (has & MOTUS_HAS_BOUNDS) {
-        for (d = 0; d < batch->dimensions; ++d) {
-            k.bounds_min[d] = scene->bounds_min[d];
-            k.bounds_max[d] = scene->bounds_max[d];
-        }
-        k.restitution = scene->restitution;
-    }
-
-    if (k.has_gravity) flags |= MOTUS__K_GRAVITY;
-    if (k.has_linear_drag) flags |= MOTUS__K_LINEAR_DRAG;
-    if (motus__scene_damping_flags(has)) flags |= MOTUS__K_DAMPING;
-    if (has & MOTUS_HAS_PARTICLE_MASS) flags |= MOTUS__K_MASS;
-    if (has & MOTUS_HAS_FORCES) flags |= MOTUS__K_FORCES;
-    if (has & MOTUS_HAS_BOUNDS) flags |= MOTUS__K_BOUNDS;
-    if ((has & (MOTUS_HAS_QUADRATIC_DRAG | MOTUS_HAS_ATTRACTOR)) || !k.semi_implicit ||
-        (!(has & MOTUS_HAS_PARTICLE_MASS) && scene->inverse_mass == 0))
-        flags = (flags & (MOTUS__K_MASS | MOTUS__K_FORCES)) | MOTUS__GENERAL; /* gravity, drag: by mask */
-
-#ifdef MOTUS_CHECKED
-    /* The range was checked finite above: a non-finite result can only be an overflow. Find it before
-       writing anything. */
-    if (motus__batch_dry_run(batch, first, count, &k, flags)) return MOTUS_ERROR_OVERFLOW;
-#endif
-    broken = batch->dimensions == 2 ? motus__batch_dispatch2(batch, first, count, &k, flags)
-                                    : motus__batch_dispatch3(batch, first, count, &k, flags);
-    if (broken < 0) return MOTUS_ERROR_UNSUPPORTED; /* cannot happen: every flag combination has a kernel */
-    if (broken) { /* the sum overflowed or a value is not finite: look at each one */
-        int i;
-        for (i = first; i < first + count; ++i) {
-            if ((has & MOTUS_HAS_PARTICLE_MASS) && !motus_real_is_finite(batch->inverse_mass[i]))
-                return MOTUS_ERROR_NOT_FINITE;
-            for (d = 0; d < batch->dimensions; ++d)
-                if (!motus_real_is_finite(batch->position[d][i]) || !motus_real_is_finite(batch->velocity[d][i]))
-                    return MOTUS_ERROR_NOT_FINITE;
-        }
-    }
-    return MOTUS_OK;
 }
 
-/* springs[0, n) checked as motus_forces_check(count) checks them, several springs a vector: where a spring is
-   a whole number of words of motus__bits (7 of 4 bytes in float, 6 of 8 in double: ints first, then reals),
-   L springs are W vectors of L words whose field pattern repeats every W vectors; lane masks pick the tests
-   each word gets. The last springs go one at a time. count >= 0. */
-#if MOTUS__VECTOR && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-#define MOTUS__SPRINGS_VECTOR 1
-typedef motus__bits motus__words __attribute__((vector_size(MOTUS_SIMD_BYTES), aligned(sizeof(int)), may_alias));
-#else
-#define MOTUS__SPRINGS_VECTOR 0
-#endif
-MOTUS_API motus_result motus__springs_check(const motus_spring *springs, int n, int count) {
-    motus__bits not_finite = 0;
-    int out_of_range = 0, i = 0;
-#if MOTUS__SPRINGS_VECTOR
-    enum { WORDS = (int)(sizeof(motus_spring) / sizeof(motus__bits)), INTS = (int)(2 * sizeof(int) / sizeof(motus__bits)) };
-    const int layout_ok = sizeof(motus_spring) == WORDS * sizeof(motus__bits) && offsetof(motus_spring, anchor) == 2 * sizeof(int) &&
-                          offsetof(motus_spring, damping) == sizeof(motus_spring) - sizeof(motus_real);
-    if (layout_ok && n > MOTUS__LANES) {
-        const motus__bits *words = (const motus__bits *)(const void *)springs;
-        motus__words real_field[WORDS], negative_field[WORDS], index_field[WORDS], nf, bad;
-        int v, lane;
-        for (v = 0; v < WORDS; ++v)
-            for (lane = 0; lane < MOTUS__LANES; ++lane) {
-                const int field = (v * MOTUS__LANES + lane) % WORDS; /* word index within its spring */
-                real_field[v][lane] = field >= INTS ? ~(motus__bits)0 : 0;
-                negative_field[v][lane] = field >= WORDS - 3 ? ~(motus__bits)0 : 0; /* rest length, stiffness, damping */
-                index_field[v][lane] = field == 0 ? ~(motus__bits)0 : 0;
-            }
-        nf = bad = real_field[0] ^ real_field[0];
-        /* A block reads one word past its last spring (b beside a, in float): stop a spring early. */
-        for (; i + MOTUS__LANES < n; i += MOTUS__LANES) {
-            const motus__bits *block = words + (size_t)i * WORDS;
-            for (v = 0; v < WORDS; ++v) {
-                const motus__words w = *(const motus__words *)(const void *)(block + v * MOTUS__LANES);
-                nf |= ((w & (motus__bits)~MOTUS__SIGN_BIT) + (MOTUS__EXPONENT_MASK & (motus__bits)~(MOTUS__EXPONENT_MASK << 1))) & real_field[v];
-                bad |= (motus__words)(w > MOTUS__SIGN_BIT) & negative_field[v];
-#ifdef MOTUS_DOUBLE /* a and b share word 0: a the low half, b the high half (little-endian) */
-                {
-                    const motus__words a = w & 0xFFFFFFFFu, b = w >> 32;
-                    bad |= (motus__words)((a >= (motus__bits)count) | (((b + 1) & 0xFFFFFFFFu) > (motus__bits)count) | (a == b)) &
-                           index_field[v];
-                }
-#else /* a in word 0, b in word 1: the next word */
-                {
-                    const motus__words b = *(const motus__words *)(const void *)(block + v * MOTUS__LANES + 1);
-                    bad |= (motus__words)((w >= (motus__bits)count) | (b + 1 > (motus__bits)count) | (w == b)) & index_field[v];
-                }
-#endif
-            }
-        }
-        for (lane = 0; lane < MOTUS__LANES; ++lane) {
-            not_finite |= nf[lane];
-            out_of_range |= bad[lane] != 0;
-        }
+/* MOTUS__LANES particles (n of them real) from index i: load, every substep's method and walls, the
+   damping, the check sum, store. dims, method, contiguous and coupled are constants where it is inlined:
+   the compiler drops what they exclude. The check sum is NaN or infinite if any new value is. */
+MOTUS__KI void motus__particles(const motus__job *j, int i, int n, motus__lane *check, const int dims,
+                                const int method, const int contiguous, const int coupled) {
+    const ptrdiff_t stride = contiguous ? 1 : j->stride;
+    const ptrdiff_t at = (ptrdiff_t)i * stride;
+    const unsigned t = j->terms;
+    const motus__lane zero = motus__splat(0);
+    motus__lane x[3], v[3], base[3], inverse_mass, v_start[3];
+    motus__mask movable;
+    int d, s, stopped = 0;
+    inverse_mass = (t & MOTUS__T_MASS) ? motus__load(j->inverse_mass + at, stride, n) : j->uniform_inverse_mass;
+    movable = inverse_mass != zero;
+    for (d = 0; d < dims; ++d) {
+        x[d] = motus__load(j->x[d] + at, stride, n);
+        v[d] = motus__load(j->v[d] + at, stride, n);
+        base[d] = (t & MOTUS__T_FORCES) ? motus__load(j->f[d] + at, stride, n) * inverse_mass : zero;
     }
-#endif
-    for (; i < n; ++i) motus__spring_check(&springs[i], count, &not_finite, &out_of_range);
-    if (not_finite & MOTUS__SIGN_BIT) return MOTUS_ERROR_NOT_FINITE;
-    return out_of_range ? MOTUS_ERROR_INVALID_FORCES : MOTUS_OK;
-}
-
-/* The force spring `s` puts on its first end (the second gets its opposite), from the batch's state. */
-MOTUS__INLINE motus_vec2 motus__batch_spring_force(const motus_batch *batch, const motus_spring *s) {
-    const int a = s->a, b = s->b, anchored = b < 0;
-    motus_vec2 xa = motus_v2(batch->position[0][a], batch->position[1][a]);
-    motus_vec2 va = motus_v2(batch->velocity[0][a], batch->velocity[1][a]);
-    motus_vec2 d = motus_vec2_sub(xa, anchored ? s->anchor : motus_v2(batch->position[0][b], batch->position[1][b]));
-    motus_vec2 relative = anchored ? va : motus_vec2_sub(va, motus_v2(batch->velocity[0][b], batch->velocity[1][b]));
-    return motus__spring_force(s, d, relative);
-}
-
-#ifdef MOTUS_CHECKED
-MOTUS__INLINE motus_real motus__abs(motus_real x) { return x < 0 ? -x : x; }
-
-/* Checked builds: would adding the springs' forces make a force not finite? Writes nothing. Each spring's
-   force and each force it adds to must be finite; then no running sum may overflow. A bound settles that
-   in one pass: B starts at the largest |force| the springs touch and adds |f| of every spring in order.
-   Rounding is monotonic, so each particle's running sum, summed in that order, never exceeds B in
-   magnitude: if B is finite, nothing overflows. Only when B is not (forces within a few springs' worth
-   of the largest real) is each touched particle's sum replayed exactly, in O(spring_count^2). */
-static motus_result motus__batch_springs_would_overflow(const motus_batch *batch, const motus_spring *springs,
-                                                        int spring_count) {
-    motus_real bound[2] = {0, 0};
-    int i, j, c, end;
-    for (i = 0; i < spring_count; ++i)
-        for (end = 0; end < 2; ++end) {
-            const int p = end ? springs[i].b : springs[i].a;
-            for (c = 0; c < 2 && p >= 0; ++c) {
-                const motus_real force = batch->force[c][p];
-                if (!motus_real_is_finite(force)) return MOTUS_ERROR_NOT_FINITE;
-                if (motus__abs(force) > bound[c]) bound[c] = motus__abs(force);
-            }
+    if (t & MOTUS__T_MASS) check[0] = check[0] + (inverse_mass - inverse_mass); /* a NaN mass shows */
+    for (s = 0; s < j->substeps && !stopped; ++s) {
+        for (d = 0; d < dims; ++d) v_start[d] = v[d];
+        switch (method) {
+        case MOTUS_SEMI_IMPLICIT_EULER: stopped = motus__semi_implicit_euler(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
+        case MOTUS_EXPLICIT_EULER: stopped = motus__explicit_euler(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
+        case MOTUS_POSITION_VERLET: stopped = motus__position_verlet(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
+        case MOTUS_VELOCITY_VERLET: stopped = motus__velocity_verlet(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
+        case MOTUS_LEAPFROG: stopped = motus__leapfrog(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
+        case MOTUS_MIDPOINT: stopped = motus__midpoint(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
+        case MOTUS_RK4: stopped = motus__rk4(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
+        case MOTUS_FOREST_RUTH: stopped = motus__forest_ruth(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
+        default: stopped = motus__exact_linear_drag(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
         }
-    for (i = 0; i < spring_count; ++i) {
-        const motus_vec2 f = motus__batch_spring_force(batch, &springs[i]);
-        if (!motus_vec2_is_finite(f)) return MOTUS_ERROR_NOT_FINITE;
-        bound[0] += motus__abs(f.x);
-        bound[1] += motus__abs(f.y);
+        if (stopped) return; /* a recording pass: the stage state is stored, nothing else */
+        if (t & MOTUS__T_MASS) /* immovable: nothing changed its velocity, not even a -0 into +0 */
+            for (d = 0; d < dims; ++d) v[d] = motus__select(movable, v[d], v_start[d]);
+        /* Checked before the walls, whose clamp would turn an infinite position into the wall. */
+        for (d = 0; d < dims; ++d) check[d] = (t & MOTUS__T_DRY) ? check[d] + ((x[d] - x[d]) + (v[d] - v[d]))
+                                                                 : check[d] + (x[d] + v[d]);
+        if (t & MOTUS__T_BOUNDS) motus__walls(j, x, v, dims);
     }
-    if (motus_real_is_finite(bound[0]) && motus_real_is_finite(bound[1])) return MOTUS_OK;
-    /* Exact: for each particle, at the first spring that touches it, replay its sum (springs have a != b). */
-    for (i = 0; i < spring_count; ++i)
-        for (end = 0; end < 2; ++end) {
-            const int p = end ? springs[i].b : springs[i].a;
-            int seen_before = 0;
-            motus_real sum[2];
-            if (p < 0) continue;
-            for (j = 0; j < i && !seen_before; ++j) seen_before = springs[j].a == p || springs[j].b == p;
-            if (seen_before) continue;
-            sum[0] = batch->force[0][p];
-            sum[1] = batch->force[1][p];
-            for (j = i; j < spring_count; ++j) {
-                motus_vec2 f;
-                if (springs[j].a != p && springs[j].b != p) continue;
-                f = motus__batch_spring_force(batch, &springs[j]);
-                if (springs[j].a == p) { sum[0] += f.x; sum[1] += f.y; }
-                else { sum[0] -= f.x; sum[1] -= f.y; } /* the second end gets -f */
-                if (!motus_real_is_finite(sum[0]) || !motus_real_is_finite(sum[1])) return MOTUS_ERROR_NOT_FINITE;
-            }
+    if ((t & MOTUS__T_DAMPING) && j->apply_damping)
+        for (d = 0; d < dims; ++d) { /* as motus__damp: slow components to a zero of their sign */
+            motus__lane damped = v[d] * j->kept;
+            damped = motus__select((damped < j->rest_speed) & (damped > -j->rest_speed), damped * zero, damped);
+            v[d] = (t & MOTUS__T_MASS) ? motus__select(movable, damped, v[d]) : damped;
         }
-    return MOTUS_OK;
+    if (t & MOTUS__T_DRY) return;
+    for (d = 0; d < dims; ++d) {
+        motus__store(j->x[d] + at, x[d], stride, n);
+        motus__store(j->v[d] + at, v[d], stride, n);
+    }
 }
-#endif
 
-/* Adds the forces of `springs` (see motus_spring) to the force arrays of a 2D batch of `count` particles,
-   as motus_stepper_step sums them; call it once per step for the whole batch, before stepping its ranges.
-   Like motus_batch_step, a release build reads the data once: a NaN or Inf among the spring ends, or a sum
-   that overflows, gives MOTUS_ERROR_NOT_FINITE after the forces were added. With MOTUS_CHECKED a spring
-   whose force or end forces are not finite, or a sum that would overflow, is found first, and nothing is
-   written. */
-MOTUS_API motus_result motus_batch_add_spring_forces(const motus_batch *batch, int count, const motus_spring *springs,
-                                                     int spring_count) {
-    motus_result result;
-    motus__bits not_finite = 0;
+typedef int (*motus__kernel_function)(const motus__job *j, int first, int end);
+static motus__kernel_function motus__kernel_for(motus_method method, int dims, int general);
+
+/* A kernel: particles [first, end) in groups of MOTUS__LANES. Returns nonzero if the new state's check sum
+   is not finite. */
+MOTUS__KI int motus__kernel(const motus__job *j, int first, int end, const int dims, const int method,
+                            const int contiguous, const int coupled) {
+    motus__lane check[3];
     int i;
-    if (!batch) return MOTUS_ERROR_NULL_POINTER;
-    if (count < 0) return MOTUS_ERROR_INVALID_COUNT;
-    if (batch->dimensions != 2 && batch->dimensions != 3) return MOTUS_ERROR_INVALID_SCENE;
-    if (batch->dimensions != 2) return MOTUS_ERROR_UNSUPPORTED;
-    if (spring_count > 0 && (!batch->position[0] || !batch->position[1] || !batch->velocity[0] ||
-                             !batch->velocity[1] || !batch->force[0] || !batch->force[1]))
-        return MOTUS_ERROR_NULL_POINTER;
-    if (spring_count < 0 || (spring_count > 0 && !springs)) return MOTUS_ERROR_INVALID_FORCES;
-    result = motus__springs_check(springs, spring_count, count); /* as motus_forces_check, faster */
-    if (result != MOTUS_OK) return result;
-#ifdef MOTUS_CHECKED
-    result = motus__batch_springs_would_overflow(batch, springs, spring_count);
-    if (result != MOTUS_OK) return result;
-#endif
-    for (i = 0; i < spring_count; ++i) {
-        const motus_spring *s = &springs[i];
-        const int a = s->a, b = s->b;
-        const motus_vec2 f = motus__batch_spring_force(batch, s);
-        batch->force[0][a] += f.x;
-        batch->force[1][a] += f.y;
-        not_finite |= motus__not_finite_bits(batch->force[0][a]) | motus__not_finite_bits(batch->force[1][a]);
-        if (b >= 0) {
-            batch->force[0][b] -= f.x;
-            batch->force[1][b] -= f.y;
-            not_finite |= motus__not_finite_bits(batch->force[0][b]) | motus__not_finite_bits(batch->force[1][b]);
+    int broken = 0;
+    check[0] = check[1] = check[2] = motus__splat(0);
+    if (contiguous) { /* whole groups here, with plain vector loads; the rest through the general kernel */
+        const int whole_end = first + (end - first) / MOTUS__LANES * MOTUS__LANES;
+        for (i = first; i < whole_end; i += MOTUS__LANES)
+            motus__particles(j, i, MOTUS__LANES, check, dims, method, 1, coupled);
+        if (whole_end < end) broken = motus__kernel_for((motus_method)method, dims, 1)(j, whole_end, end);
+    } else {
+        for (i = first; i < end; i += MOTUS__LANES) {
+            const int n = end - i < MOTUS__LANES ? end - i : MOTUS__LANES;
+            motus__particles(j, i, n, check, dims, method, 0, coupled);
         }
     }
-    /* Every force written (a NaN or Inf the arrays held, a spring's, or a sum that overflowed), tested by bit
-       operations that the loop ORs up. */
-    return (not_finite & MOTUS__SIGN_BIT) ? MOTUS_ERROR_NOT_FINITE : MOTUS_OK;
+    return broken | !motus_real_is_finite(motus__lane_sum(check[0] + check[1] + check[2]));
 }
 
-/* =================================================================================================
-   Fixed-step clock: the game loop's accumulator
-   =================================================================================================
-   Frames take whatever time they take; the simulation should not (see DAMPING at the top). The clock turns
-   each frame's duration into a whole number of steps of one fixed dt and carries the rest over to the next
-   frame (G. Fiedler, "Fix your timestep", 2004):
-
-       motus_clock clock;
-       motus_clock_init(&clock, MOTUS_R(1.0) / 60, 0);        // dt 1/60 s, at most 8 steps a frame
-       // every frame:
-       int steps, i;
-       motus_clock_advance(&clock, frame_seconds, &steps);
-       for (i = 0; i < steps; ++i) { previous = p.position; ...forces...; motus_particle_step(&p, clock.fixed_dt); }
-       draw(motus_vec2_lerp(previous, p.position, motus_clock_alpha(&clock)));
-
-   The same inputs stepped through the clock give the same states at any frame rate: only the number of
-   steps per frame changes, never their dt. Drawing the state interpolated by alpha between the last two
-   steps hides the beat between frame rate and step rate, at the cost of showing the past by < 1 step.
-
-   Spiral of death: a long frame (a 2 s hitch: loading, a breakpoint, a dragged window) asks for many
-   steps, which make the next frame long too. The clock runs at most max_steps_per_frame steps and drops
-   the whole steps beyond that (the fraction of a step left over is kept, so alpha stays smooth): the game
-   slows down instead of launching everything. The fields steps_dropped_* and time_dropped_* report it.
-
-   The accumulator counts integer ticks, 2^32 to a step, rather than seconds in a motus_real: a frame of
-   exactly dt (or k*dt) is exactly 2^32 (k*2^32) ticks, so a 60 Hz game with dt 1/60 takes exactly one step
-   every frame for ever, with no comparison of two nearly equal reals; adding and subtracting ticks is
-   exact, so the leftover never drifts over a long run (a float accumulator of seconds rounds at every
-   frame, and a double one still decides "one step or none" by comparing two sums that differ by rounding);
-   the float and double builds count the same. Each frame is rounded once to the nearest tick, computed in
-   double: 2^-33 of a step at most. alpha = leftover / 2^32 is in [0, 1) by construction. */
-
-/* Steps a frame may run when motus_clock_init is given 0: 8 steps of 1/60 s cover frames up to 133 ms
-   (7.5 frames a second) before time is dropped. */
-#ifndef MOTUS_CLOCK_DEFAULT_MAX_STEPS
-#define MOTUS_CLOCK_DEFAULT_MAX_STEPS 8
-#endif
-#define MOTUS__CLOCK_TICKS_PER_STEP 4294967296.0 /* 2^32 */
-#define MOTUS__CLOCK_TICK_MASK 0xFFFFFFFFu
-
-typedef struct motus_clock {
-    motus_real fixed_dt;                 /* s, the dt of every step */
-    int max_steps_per_frame;             /* the cap against the spiral of death */
-    uint64_t accumulator;                /* ticks not stepped yet: < 2^32 (one step) between frames */
-    uint64_t steps_total;                /* steps run since init: simulated time = steps_total * fixed_dt */
-    uint64_t steps_dropped_last_frame;   /* whole steps the cap dropped in the last advance */
-    uint64_t steps_dropped_total;        /* since init */
-    motus_real time_dropped_last_frame;  /* s, dropped in the last advance */
-    double time_dropped_total;           /* s, since init; a double so that a float build's sum holds */
-} motus_clock;
-
-/* fixed_dt must be finite and > 0; max_steps_per_frame >= 0, where 0 means MOTUS_CLOCK_DEFAULT_MAX_STEPS. */
-MOTUS_API motus_result motus_clock_init(motus_clock *clock, motus_real fixed_dt, int max_steps_per_frame) {
-    if (!clock) return MOTUS_ERROR_NULL_POINTER;
-    if (!motus__is_positive_finite(fixed_dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
-    if (max_steps_per_frame < 0) return MOTUS_ERROR_INVALID_COUNT;
-    clock->fixed_dt = fixed_dt;
-    clock->max_steps_per_frame = max_steps_per_frame ? max_steps_per_frame : MOTUS_CLOCK_DEFAULT_MAX_STEPS;
-    clock->accumulator = 0;
-    clock->steps_total = 0;
-    clock->steps_dropped_last_frame = 0;
-    clock->steps_dropped_total = 0;
-    clock->time_dropped_last_frame = 0;
-    clock->time_dropped_total = 0;
-    return MOTUS_OK;
-}
-
-/* Adds a frame that lasted frame_seconds (finite and >= 0; 0 runs no step) and sets *steps_to_run to the
-   fixed steps to run now, at most max_steps_per_frame. A negative, NaN or infinite frame time returns
-   MOTUS_ERROR_INVALID_FRAME_TIME with the clock left as it was and *steps_to_run 0, so that a loop which
-   ignores the result runs nothing. A clock that motus_clock_init did not make is MOTUS_ERROR_INVALID_COUNT. */
-MOTUS_API motus_result motus_clock_advance(motus_clock *clock, motus_real frame_seconds, int *steps_to_run) {
-    double frame_steps, dt;
-    uint64_t ticks, steps, cap, dropped = 0;
-    motus_real time_dropped = 0;
-    if (!clock || !steps_to_run) return MOTUS_ERROR_NULL_POINTER;
-    *steps_to_run = 0;
-    if (!motus_real_is_finite(frame_seconds) || frame_seconds < 0) return MOTUS_ERROR_INVALID_FRAME_TIME;
-    if (!motus__is_positive_finite(clock->fixed_dt) || clock->max_steps_per_frame <= 0 ||
-        clock->accumulator > MOTUS__CLOCK_TICK_MASK)
-        return MOTUS_ERROR_INVALID_COUNT;
-    dt = (double)clock->fixed_dt;
-    cap = (uint64_t)clock->max_steps_per_frame;
-    frame_steps = (double)frame_seconds / dt;
-    if (frame_steps < 2147483648.0) { /* < 2^31 steps: the ticks fit in 64 bits, counted exactly */
-        ticks = clock->accumulator + (uint64_t)(frame_steps * MOTUS__CLOCK_TICKS_PER_STEP + 0.5);
-        steps = ticks >> 32;
-        clock->accumulator = ticks & MOTUS__CLOCK_TICK_MASK;
-        if (steps > cap) {
-            dropped = steps - cap;
-            time_dropped = (motus_real)((double)dropped * dt);
-            steps = cap;
-        }
-    } else { /* a frame of 2^31 steps or more (cap <= INT_MAX < 2^31): a fraction of a step is noise */
-        steps = cap;
-        dropped = frame_steps < 1.8e19 ? (uint64_t)frame_steps - cap : ~(uint64_t)0;
-        time_dropped = (motus_real)((double)frame_seconds - (double)cap * dt);
+/* One kernel per method and dimension count compiled for plain arrays with no coupling (the fast path), and
+   one that takes any stride and the coupled passes. 36 kernels in all: terms the scene lacks are skipped
+   by a branch on a loop-invariant flag, which the branch predictor makes free next to the loads. */
+#define MOTUS__KERNEL_PAIR(method, dims)                                                                         \
+    static int motus__fast_##method##_##dims(const motus__job *j, int first, int end) {                          \
+        return motus__kernel(j, first, end, dims, method, 1, 0);                                                 \
+    }                                                                                                            \
+    static int motus__general_##method##_##dims(const motus__job *j, int first, int end) {                       \
+        return motus__kernel(j, first, end, dims, method, 0, 1);                                                 \
     }
-    clock->steps_dropped_last_frame = dropped;
-    clock->steps_dropped_total += dropped;
-    clock->time_dropped_last_frame = time_dropped;
-    clock->time_dropped_total += (double)time_dropped;
-    clock->steps_total += steps;
-    *steps_to_run = (int)steps;
-    return MOTUS_OK;
+#define MOTUS__KERNEL_PAIRS(name, text, order, evaluations, limit) MOTUS__KERNEL_PAIR(name, 2) MOTUS__KERNEL_PAIR(name, 3)
+MOTUS__METHODS(MOTUS__KERNEL_PAIRS)
+#undef MOTUS__KERNEL_PAIRS
+#define MOTUS__KERNEL_ROW(name, text, order, evaluations, limit)                                                  \
+    {{motus__fast_##name##_2, motus__general_##name##_2}, {motus__fast_##name##_3, motus__general_##name##_3}},
+static motus__kernel_function motus__kernel_for(motus_method method, int dims, int general) {
+    static const motus__kernel_function kernels[MOTUS_METHOD_COUNT][2][2] = {MOTUS__METHODS(MOTUS__KERNEL_ROW)};
+    return kernels[method][dims - 2][general];
 }
+#undef MOTUS__KERNEL_ROW
+#undef MOTUS__KERNEL_PAIR
 
-/* How far the clock is between the last step run and the next one, in [0, 1): the weight of the newest
-   state when drawing, position = lerp(before the last step, after it, alpha). 0 for a NULL clock. */
-MOTUS_API motus_real motus_clock_alpha(const motus_clock *clock) {
-    motus_real alpha;
-    if (!clock || clock->accumulator > MOTUS__CLOCK_TICK_MASK) return 0;
-    alpha = (motus_real)((double)clock->accumulator / MOTUS__CLOCK_TICKS_PER_STEP);
-    /* In float a leftover within 2^-25 of a step rounds up to 1: keep alpha below 1 as promised. */
-    return alpha < 1 ? alpha : 1 - MOTUS_REAL_EPSILON / 2;
-}
-
-/* Simulated seconds since init: steps_total * fixed_dt, in double (exact up to 2^53 steps' rounding). */
-MOTUS_API double motus_clock_time(const motus_clock *clock) {
-    if (!clock) return 0;
-    return (double)clock->steps_total * (double)clock->fixed_dt;
-}
-
-/* a + (b - a)*t: t = 0 gives a exactly; for drawing a state between two steps with t = motus_clock_alpha. */
-MOTUS_API motus_vec2 motus_vec2_lerp(motus_vec2 a, motus_vec2 b, motus_real t) {
-    return motus_vec2_add(a, motus_vec2_scale(motus_vec2_sub(b, a), t));
-}
-
-/* =================================================================================================
-   Validation and messages
-   =================================================================================================
-   BAD INPUT: WHAT EACH BUILD CHECKS
-   Every function that can be handed bad input returns a motus_result, and checks the arguments it takes
-   and the data it reads before anything is written. The rules, the same for every function:
-   - NULL where memory is needed: MOTUS_ERROR_NULL_POINTER. Memory is not needed for a count of 0
-     (particles, springs) nor for batch arrays the scene does not have.
-   - A count of 0 is valid: MOTUS_OK and nothing written. motus_stepper_step with count 0 is a step of an
-     empty world: its clock still advances by dt, and (as on any change of count) it forgets the last
-     displacements of position Verlet and a kept acceleration.
-   - count < 0, first < 0, first + count past INT_MAX, count above a stepper's capacity, a force model
-     used with count < 0: MOTUS_ERROR_INVALID_COUNT. motus cannot know how long your arrays are: a range
-     inside INT_MAX but past the end of an array is yours to avoid.
-   - dt not finite or not > 0 (-0 included): MOTUS_ERROR_INVALID_TIME_STEP, before anything else is read.
-   - NaN or Inf in an argument, a force model, a scene or a particle field the function reads:
-     MOTUS_ERROR_NOT_FINITE. A damping factor is a fraction, so a NaN one is out of its range [0, 1]:
-     MOTUS_ERROR_INVALID_DAMPING (a NaN restitution or drag rate is MOTUS_ERROR_NOT_FINITE).
-   - mass <= 0 or 1/mass infinite, inverse mass < 0: MOTUS_ERROR_INVALID_MASS. An inverse mass of -Inf is
-     both; motus_particle_check and the batch checks say NOT_FINITE, the steps say INVALID_MASS.
-   - Finite inputs whose result is not finite (a huge force, a huge dt): MOTUS_ERROR_OVERFLOW. So is a
-     NaN or Inf that a force callback returned: the inputs motus can see were finite.
-   - Unknown bits in motus_stepper_desc.flags, or scratch not aligned for motus_real:
-     MOTUS_ERROR_INVALID_DESC; unknown MOTUS_HAS_* bits in a scene: MOTUS_ERROR_INVALID_SCENE.
-   On any result but MOTUS_OK nothing was written (particles, the stepper and what it keeps between steps,
-   force arrays), in every build, with one exception: bad particle data in the batch kernels' release
-   builds. A stepper's scratch is working memory: a step computes there before it decides, so only the
-   part kept between steps (position Verlet's displacements, a kept acceleration) is sure to stay.
-
-   Release builds check all of the above. The particle functions and motus_stepper_step are all or
-   nothing at no extra pass over the data: the new state is computed aside, summed (a NaN or Inf makes the
-   sum so), and written only if the sum is finite; only a sum that is not finite has its values looked at
-   one by one, to name the cause. The batch kernels check the scene and the arguments (O(1)) but read the
-   particle data once: a NaN or Inf in it, or an overflow, makes motus_batch_step and
-   motus_batch_add_spring_forces return MOTUS_ERROR_NOT_FINITE after they wrote, and a negative
-   batch.inverse_mass[i] is not looked for.
-   Checked builds (define MOTUS_CHECKED) find bad batch data first: motus_batch_step runs
-   motus_batch_check over its range, motus_batch_add_spring_forces computes every spring force first and
-   makes sure that no particle's sum of them overflows, and on bad data nothing is written (a negative
-   inverse mass is then MOTUS_ERROR_INVALID_MASS).
-   Either build: call motus_particles_check or motus_batch_check_report where data comes in (a file, the
-   network, an editor) to learn which particle and which field is bad. */
-
-MOTUS_API const char *motus_result_string(motus_result result) {
-    switch (result) {
-    case MOTUS_OK: return "ok";
-    case MOTUS_ERROR_NULL_POINTER:
-        return "a pointer argument was NULL, or an array that the count or the scene needs; pass valid memory";
-    case MOTUS_ERROR_NOT_FINITE:
-        return "an input was NaN or infinite (an argument, a particle field, a force or scene value); all must be "
-               "finite";
-    case MOTUS_ERROR_INVALID_MASS:
-        return "mass must be finite and > 0, with 1/mass finite; inverse mass must be >= 0 (0 = immovable)";
-    case MOTUS_ERROR_INVALID_TIME_STEP: return "time step dt must be finite and > 0 seconds (not 0, negative, NaN or Inf)";
-    case MOTUS_ERROR_INVALID_DAMPING:
-        return "damping factor or restitution must be in [0, 1] (NaN is not), drag rate must be >= 0";
-    case MOTUS_ERROR_OVERFLOW:
-        return "the inputs were finite but the result would not be (overflow, or NaN from a force callback); "
-               "nothing was written: use a smaller dt or smaller forces";
-    case MOTUS_ERROR_INVALID_COUNT:
-        return "count or range out of bounds: count and first must be >= 0, first + count <= INT_MAX, count at "
-               "most the stepper's capacity";
-    case MOTUS_ERROR_INVALID_FORCES:
-        return "force model out of range: drags, attractor strength, stiffness, spring damping and rest length "
-               "must be >= 0; spring ends in [0, count) with b = -1 for an anchor and a != b; springs not NULL";
-    case MOTUS_ERROR_SCRATCH_TOO_SMALL:
-        return "stepper memory too small: give at least motus_stepper_scratch_size(method, capacity) bytes";
-    case MOTUS_ERROR_INVALID_SCENE:
-        return "scene invalid: unknown MOTUS_HAS_* bit, both damping flags, dimensions not 2 or 3, or bounds "
-               "min > max";
-    case MOTUS_ERROR_UNSUPPORTED:
-        return "unsupported: the exact stepper takes gravity and linear drag only, a batch semi-implicit or "
-               "explicit Euler and springs in 2D only; or the method value is unknown";
-    case MOTUS_ERROR_TOO_STIFF:
-        return "springs too stiff for this dt: more substeps needed than allowed, or the method (explicit Euler, "
-               "midpoint) is unstable on a spring at any dt";
-    case MOTUS_ERROR_INVALID_ARGUMENT:
-        return "argument out of range: a safety factor must be in (0, 1], a substep cap >= 1, a step limit >= 0";
-    case MOTUS_ERROR_INVALID_DESC:
-        return "stepper desc invalid: flags may only have MOTUS_STEPPER_* bits, scratch must be aligned for "
-               "motus_real";
-    case MOTUS_ERROR_INVALID_FRAME_TIME: return "frame time must be finite and >= 0 seconds; the clock was left as it was";
-    case MOTUS_RESULT_COUNT: break;
+/* ---- checks ---- */
+static int motus__negative(motus_real x) { return x < 0; } /* -0 is not negative; NaN is caught before */
+static motus_result motus__scene_fail(motus_check_report *report, motus_result result, const char *field, int index) {
+    if (report) {
+        report->index = index;
+        report->field = MOTUS_FIELD_NONE;
+        report->component = -1;
+        report->field_name = field;
     }
-    return "unknown motus_result value";
+    return result;
 }
-
-/* The fields a check can find bad, in particles and in batches. */
-typedef enum motus_field {
-    MOTUS_FIELD_NONE = 0,
-    MOTUS_FIELD_POSITION,
-    MOTUS_FIELD_VELOCITY,
-    MOTUS_FIELD_FORCE,
-    MOTUS_FIELD_INVERSE_MASS,
-    MOTUS_FIELD_COUNT
-} motus_field;
-
-/* "position", "velocity", "force", "inverse_mass" (the names motus_batch_check reports), "none" for
-   MOTUS_FIELD_NONE, NULL for a value out of range. */
-MOTUS_API const char *motus_field_name(motus_field field) {
-    switch (field) {
-    case MOTUS_FIELD_NONE: return "none";
-    case MOTUS_FIELD_POSITION: return "position";
-    case MOTUS_FIELD_VELOCITY: return "velocity";
-    case MOTUS_FIELD_FORCE: return "force";
-    case MOTUS_FIELD_INVERSE_MASS: return "inverse_mass";
-    case MOTUS_FIELD_COUNT: break;
-    }
-    return NULL;
+static int motus__bounds_on(const motus_scene *scene, int dims) {
+    const motus_real lo[3] = {scene->bounds_min.x, scene->bounds_min.y, scene->bounds_min.z};
+    const motus_real hi[3] = {scene->bounds_max.x, scene->bounds_max.y, scene->bounds_max.z};
+    int d, on = 0;
+    for (d = 0; d < dims; ++d) on |= (lo[d] != 0) | (hi[d] != 0);
+    return on;
 }
+static int motus__coupled(const motus_scene *scene) { return scene->spring_count > 0 || scene->force_callback; }
 
-/* Where a check found the first bad particle. Filled by every call that is given one, whatever the result:
-   index -1 and MOTUS_FIELD_NONE unless a particle is bad, so that it can be printed without a test. */
-typedef struct motus_check_report {
-    int index;              /* the first bad particle (its index in the array, or in the batch), or -1 */
-    motus_field field;      /* which of its fields */
-    int component;          /* 0 for x, 1 for y, 2 for z; -1 for the inverse mass and for none */
-    const char *field_name; /* motus_field_name(field), never NULL */
-} motus_check_report;
-
-MOTUS_API void motus__report(motus_check_report *report, int index, motus_field field, int component) {
-    if (!report) return;
-    report->index = index;
-    report->field = field;
-    report->component = component;
-    report->field_name = motus_field_name(field);
-}
-
-/* The first of particles[0..count) that motus_particle_check rejects, and its first bad field, in the
-   order position x, y, velocity x, y, force x, y, inverse mass (not finite), then a negative inverse mass.
-   Returns motus_particle_check's result for that particle: MOTUS_ERROR_NOT_FINITE or
-   MOTUS_ERROR_INVALID_MASS; MOTUS_OK if all are fine (count 0 included: particles may then be NULL).
-   `report` may be NULL. Reads each particle once; writes nothing but *report. */
-MOTUS_API motus_result motus_particles_check(const motus_particle *particles, int count, motus_check_report *report) {
-    int i, k;
+MOTUS_API motus_result motus_scene_check(const motus_scene *scene, int dimensions, int count,
+                                         motus_check_report *report) {
+    static const char *const gravity[3] = {"scene.gravity.x", "scene.gravity.y", "scene.gravity.z"};
+    static const char *const attractor[3] = {"scene.attractor.x", "scene.attractor.y", "scene.attractor.z"};
+    static const char *const lo_names[3] = {"scene.bounds_min.x", "scene.bounds_min.y", "scene.bounds_min.z"};
+    static const char *const hi_names[3] = {"scene.bounds_max.x", "scene.bounds_max.y", "scene.bounds_max.z"};
+    motus_real g[3], at[3], lo[3], hi[3];
+    int d, k, dims = dimensions == 0 ? 2 : dimensions;
     motus__report(report, -1, MOTUS_FIELD_NONE, -1);
-    if (!particles && count > 0) return MOTUS_ERROR_NULL_POINTER;
-    if (count < 0) return MOTUS_ERROR_INVALID_COUNT;
-    for (i = 0; i < count; ++i) {
-        const motus_particle *p = &particles[i];
-        const motus_real values[6] = {p->position.x, p->position.y, p->velocity.x,
-                                      p->velocity.y, p->force.x,    p->force.y};
-        /* One combined test per particle: the loop that finds the field runs only for a bad particle. */
-        if (motus_particle_check(p) == MOTUS_OK) continue;
-        for (k = 0; k < 6; ++k)
-            if (!motus_real_is_finite(values[k])) {
-                motus__report(report, i, (motus_field)(MOTUS_FIELD_POSITION + k / 2), k % 2);
+    if (!scene) return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "scene", -1);
+    if (dims != 2 && dims != 3) return motus__scene_fail(report, MOTUS_ERROR_INVALID_DIMENSIONS, "dimensions", -1);
+    if (count < 0) return motus__scene_fail(report, MOTUS_ERROR_INVALID_COUNT, "count", -1);
+    if ((unsigned)scene->method >= MOTUS_METHOD_COUNT)
+        return motus__scene_fail(report, MOTUS_ERROR_INVALID_METHOD, "scene.method", -1);
+    if (scene->substeps < 0) return motus__scene_fail(report, MOTUS_ERROR_INVALID_SUBSTEPS, "scene.substeps", -1);
+    g[0] = scene->gravity.x, g[1] = scene->gravity.y, g[2] = scene->gravity.z;
+    at[0] = scene->attractor.x, at[1] = scene->attractor.y, at[2] = scene->attractor.z;
+    lo[0] = scene->bounds_min.x, lo[1] = scene->bounds_min.y, lo[2] = scene->bounds_min.z;
+    hi[0] = scene->bounds_max.x, hi[1] = scene->bounds_max.y, hi[2] = scene->bounds_max.z;
+    for (d = 0; d < dims; ++d)
+        if (!motus_real_is_finite(g[d])) return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, gravity[d], -1);
+    if (!motus_real_is_finite(scene->linear_drag))
+        return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.linear_drag", -1);
+    if (motus__negative(scene->linear_drag))
+        return motus__scene_fail(report, MOTUS_ERROR_INVALID_DRAG, "scene.linear_drag", -1);
+    if (!motus_real_is_finite(scene->quadratic_drag))
+        return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.quadratic_drag", -1);
+    if (motus__negative(scene->quadratic_drag))
+        return motus__scene_fail(report, MOTUS_ERROR_INVALID_DRAG, "scene.quadratic_drag", -1);
+    if (!motus__fraction_valid(scene->damping_per_step))
+        return motus__scene_fail(report, MOTUS_ERROR_INVALID_DAMPING, "scene.damping_per_step", -1);
+    if (!motus__fraction_valid(scene->damping_per_second))
+        return motus__scene_fail(report, MOTUS_ERROR_INVALID_DAMPING, "scene.damping_per_second", -1);
+    if (scene->damping_per_step != 0 && scene->damping_per_second != 0)
+        return motus__scene_fail(report, MOTUS_ERROR_INVALID_DAMPING, "scene.damping_per_second (and damping_per_step: set one)", -1);
+    for (d = 0; d < dims; ++d)
+        if (!motus_real_is_finite(at[d])) return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, attractor[d], -1);
+    if (!motus_real_is_finite(scene->attractor_strength))
+        return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.attractor_strength", -1);
+    if (motus__negative(scene->attractor_strength))
+        return motus__scene_fail(report, MOTUS_ERROR_INVALID_ATTRACTOR, "scene.attractor_strength", -1);
+    for (d = 0; d < dims; ++d) {
+        if (lo[d] != lo[d]) return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, lo_names[d], -1);
+        if (hi[d] != hi[d]) return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, hi_names[d], -1);
+        if (!(lo[d] <= hi[d])) return motus__scene_fail(report, MOTUS_ERROR_INVALID_BOUNDS, lo_names[d], -1);
+    }
+    if (!motus_real_is_finite(scene->restitution))
+        return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.restitution", -1);
+    if (!motus__fraction_valid(scene->restitution))
+        return motus__scene_fail(report, MOTUS_ERROR_INVALID_RESTITUTION, "scene.restitution", -1);
+    if (!motus_real_is_finite(scene->mass)) return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.mass", -1);
+    if (scene->mass < 0 || (scene->mass > 0 && !motus_real_is_finite(MOTUS_R(1.0) / scene->mass)))
+        return motus__scene_fail(report, MOTUS_ERROR_INVALID_MASS, "scene.mass", -1);
+    if (scene->spring_count < 0)
+        return motus__scene_fail(report, MOTUS_ERROR_INVALID_SPRING, "scene.spring_count", -1);
+    if (scene->spring_count > 0 && !scene->springs)
+        return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "scene.springs", -1);
+    for (k = 0; k < scene->spring_count; ++k) {
+        const motus_spring *s = &scene->springs[k];
+        const motus_real anchor[3] = {s->anchor.x, s->anchor.y, s->anchor.z};
+        if ((unsigned)s->a >= (unsigned)count)
+            return motus__scene_fail(report, MOTUS_ERROR_INVALID_SPRING, "scene.springs[index].a", k);
+        if (s->b < -1 || s->b >= count)
+            return motus__scene_fail(report, MOTUS_ERROR_INVALID_SPRING, "scene.springs[index].b", k);
+        if (s->a == s->b) return motus__scene_fail(report, MOTUS_ERROR_INVALID_SPRING, "scene.springs[index].b", k);
+        for (d = 0; d < dims; ++d)
+            if (s->b < 0 && !motus_real_is_finite(anchor[d]))
+                return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.springs[index].anchor", k);
+        if (!motus_real_is_finite(s->rest_length))
+            return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.springs[index].rest_length", k);
+        if (!motus_real_is_finite(s->stiffness))
+            return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.springs[index].stiffness", k);
+        if (!motus_real_is_finite(s->damping))
+            return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.springs[index].damping", k);
+        if (motus__negative(s->rest_length))
+            return motus__scene_fail(report, MOTUS_ERROR_INVALID_SPRING, "scene.springs[index].rest_length", k);
+        if (motus__negative(s->stiffness))
+            return motus__scene_fail(report, MOTUS_ERROR_INVALID_SPRING, "scene.springs[index].stiffness", k);
+        if (motus__negative(s->damping))
+            return motus__scene_fail(report, MOTUS_ERROR_INVALID_SPRING, "scene.springs[index].damping", k);
+    }
+    if (scene->method == MOTUS_EXACT_LINEAR_DRAG &&
+        (scene->quadratic_drag != 0 || scene->attractor_strength != 0 || motus__coupled(scene)))
+        return motus__scene_fail(report, MOTUS_ERROR_UNSUPPORTED, "scene.method", -1);
+    return MOTUS_OK;
+}
+
+/* The state's shape (not its data): O(1). */
+static motus_result motus__state_shape(const motus_state *state, int *dims, motus_check_report *report) {
+    int d, e;
+    if (!state) return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "state", -1);
+    *dims = state->dimensions == 0 ? 2 : state->dimensions;
+    if (*dims != 2 && *dims != 3) return motus__scene_fail(report, MOTUS_ERROR_INVALID_DIMENSIONS, "state.dimensions", -1);
+    if (state->count < 0) return motus__scene_fail(report, MOTUS_ERROR_INVALID_COUNT, "state.count", -1);
+    if (state->stride < 0) return motus__scene_fail(report, MOTUS_ERROR_INVALID_STRIDE, "state.stride", -1);
+    if (state->count == 0) return MOTUS_OK;
+    for (d = 0; d < *dims; ++d) {
+        if (!state->position[d]) return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "state.position", -1);
+        if (!state->velocity[d]) return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "state.velocity", -1);
+    }
+    /* The stride times the count must be an offset C can form. */
+    if (state->stride > 1 && (size_t)(state->count - 1) > (size_t)PTRDIFF_MAX / (size_t)state->stride / sizeof(motus_real))
+        return motus__scene_fail(report, MOTUS_ERROR_INVALID_COUNT, "state.count", -1);
+    for (d = 0; d < *dims; ++d)
+        for (e = 0; e < *dims; ++e)
+            if (state->position[d] == state->velocity[e] || (d != e && (state->position[d] == state->position[e] ||
+                                                                        state->velocity[d] == state->velocity[e])))
+                return motus__scene_fail(report, MOTUS_ERROR_ALIASING, "state.position/velocity", -1);
+    return MOTUS_OK;
+}
+
+MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_state *state, int first, int count,
+                                         motus_check_report *report) {
+    motus_result result;
+    int dims = 2, i, d, forces;
+    ptrdiff_t stride;
+    motus__report(report, -1, MOTUS_FIELD_NONE, -1);
+    result = motus__state_shape(state, &dims, report);
+    if (result != MOTUS_OK) return result;
+    (void)scene;
+    if (first < 0 || count < 0 || first > state->count || count > state->count - first)
+        return motus__scene_fail(report, MOTUS_ERROR_INVALID_COUNT, "first/count", -1);
+    stride = state->stride == 0 ? 1 : state->stride;
+    forces = state->force[0] != NULL;
+    for (i = first; i < first + count; ++i) {
+        const ptrdiff_t at = (ptrdiff_t)i * stride;
+        for (d = 0; d < dims; ++d)
+            if (!motus_real_is_finite(state->position[d][at])) {
+                motus__report(report, i, MOTUS_FIELD_POSITION, d);
                 return MOTUS_ERROR_NOT_FINITE;
             }
-        motus__report(report, i, MOTUS_FIELD_INVERSE_MASS, -1);
-        return motus_real_is_finite(p->inverse_mass) ? MOTUS_ERROR_INVALID_MASS : MOTUS_ERROR_NOT_FINITE;
+        for (d = 0; d < dims; ++d)
+            if (!motus_real_is_finite(state->velocity[d][at])) {
+                motus__report(report, i, MOTUS_FIELD_VELOCITY, d);
+                return MOTUS_ERROR_NOT_FINITE;
+            }
+        for (d = 0; d < dims && forces; ++d)
+            if (state->force[d] && !motus_real_is_finite(state->force[d][at])) {
+                motus__report(report, i, MOTUS_FIELD_FORCE, d);
+                return MOTUS_ERROR_NOT_FINITE;
+            }
+        if (state->inverse_mass && (!motus_real_is_finite(state->inverse_mass[at]) || state->inverse_mass[at] < 0)) {
+            motus__report(report, i, MOTUS_FIELD_INVERSE_MASS, -1);
+            return motus_real_is_finite(state->inverse_mass[at]) ? MOTUS_ERROR_INVALID_MASS : MOTUS_ERROR_NOT_FINITE;
+        }
     }
     return MOTUS_OK;
 }
 
-/* motus_batch_check with a motus_check_report: the same result and the same particle and field (same
-   name), and the component. Fields in motus_batch_check's order: the inverse mass (not finite), then per
-   dimension position, velocity, force, then a negative inverse mass. A result about the scene or the range
-   leaves index -1. */
-MOTUS_API motus_result motus_batch_check_report(const motus_scene *scene, const motus_batch *batch, int first,
-                                                int count, motus_check_report *report) {
-    int index = -1, d;
-    motus_result result;
-    motus__report(report, -1, MOTUS_FIELD_NONE, -1);
-    result = motus_batch_check(scene, batch, first, count, &index, NULL);
-    if (index < 0 || !report) return result;
-    /* motus_batch_check found particle `index` bad: which field, in its order (O(1)). */
-    if ((scene->has & MOTUS_HAS_PARTICLE_MASS) && !motus_real_is_finite(batch->inverse_mass[index])) {
-        motus__report(report, index, MOTUS_FIELD_INVERSE_MASS, -1);
-        return result;
+MOTUS_API size_t motus_scratch_size(const motus_scene *scene, const motus_state *state) {
+    size_t per_particle;
+    int dims;
+    if (!scene || !state || (unsigned)scene->method >= MOTUS_METHOD_COUNT || state->count < 0) return 0;
+    if (!motus__coupled(scene)) return 0;
+    dims = state->dimensions == 3 ? 3 : 2;
+    /* stage positions and velocities, and each evaluation's coupled forces */
+    per_particle = (size_t)dims * (size_t)(2 + motus_method_evaluations(scene->method)) * sizeof(motus_real);
+    if ((size_t)state->count > ((size_t)-1) / per_particle) return (size_t)-1;
+    return per_particle * (size_t)state->count;
+}
+
+/* ---- the step ---- */
+typedef struct motus__align_probe {
+    char c;
+    motus_real r;
+} motus__align_probe;
+
+/* The job for this scene and state; *h the substep, *substeps their number. */
+static void motus__job_init(motus__job *j, const motus_scene *scene, const motus_state *state, int dims, motus_real dt) {
+    const motus_real theta = (motus_real)1.3512071919596576340476878089715; /* Forest-Ruth: 1/(2 - 2^(1/3)) */
+    const motus_real g[3] = {scene->gravity.x, scene->gravity.y, scene->gravity.z};
+    const motus_real at[3] = {scene->attractor.x, scene->attractor.y, scene->attractor.z};
+    const motus_real lo[3] = {scene->bounds_min.x, scene->bounds_min.y, scene->bounds_min.z};
+    const motus_real hi[3] = {scene->bounds_max.x, scene->bounds_max.y, scene->bounds_max.z};
+    motus_real h, kept = 1;
+    int d, n = scene->substeps > 1 ? scene->substeps : 1;
+    memset(j, 0, sizeof *j);
+    /* a subnormal dt split so finely that dt/n rounds to 0 would step nothing: fewer substeps */
+    while (n > 1 && !(dt / (motus_real)n > 0)) --n;
+    h = dt / (motus_real)n;
+    j->substeps = n;
+    j->record_stage = -1;
+    j->apply_damping = 1;
+    j->stride = state->stride == 0 ? 1 : state->stride;
+    for (d = 0; d < dims; ++d) {
+        j->x[d] = state->position[d];
+        j->v[d] = state->velocity[d];
+        j->f[d] = state->force[d];
+        j->gravity[d] = motus__splat(g[d]);
+        j->attractor[d] = motus__splat(at[d]);
+        j->bounds_min[d] = motus__splat(lo[d]);
+        j->bounds_max[d] = motus__splat(hi[d]);
+        if (g[d] != 0) j->terms |= MOTUS__T_GRAVITY;
     }
-    for (d = 0; d < batch->dimensions; ++d) {
-        motus_field field = MOTUS_FIELD_NONE;
-        if (!motus_real_is_finite(batch->position[d][index])) field = MOTUS_FIELD_POSITION;
-        else if (!motus_real_is_finite(batch->velocity[d][index])) field = MOTUS_FIELD_VELOCITY;
-        else if ((scene->has & MOTUS_HAS_FORCES) && !motus_real_is_finite(batch->force[d][index]))
-            field = MOTUS_FIELD_FORCE;
-        if (field != MOTUS_FIELD_NONE) {
-            motus__report(report, index, field, d);
-            return result;
+    j->inverse_mass = state->inverse_mass;
+    if (state->force[0]) j->terms |= MOTUS__T_FORCES;
+    if (state->inverse_mass) j->terms |= MOTUS__T_MASS;
+    if (scene->linear_drag != 0) j->terms |= MOTUS__T_LINEAR_DRAG;
+    if (scene->quadratic_drag != 0) j->terms |= MOTUS__T_QUADRATIC_DRAG;
+    if (scene->attractor_strength != 0) j->terms |= MOTUS__T_ATTRACTOR;
+    if (scene->damping_per_step != 0) kept = MOTUS_R(1.0) - scene->damping_per_step;
+    if (scene->damping_per_second != 0) kept = motus__kept_per_second(scene->damping_per_second, dt);
+    if (scene->damping_per_step != 0 || scene->damping_per_second != 0) j->terms |= MOTUS__T_DAMPING;
+    if (motus__bounds_on(scene, dims)) j->terms |= MOTUS__T_BOUNDS;
+    if (motus__coupled(scene)) j->terms |= MOTUS__T_COUPLED;
+    j->linear_drag = motus__splat(scene->linear_drag);
+    j->quadratic_drag = motus__splat(scene->quadratic_drag);
+    j->attractor_strength = motus__splat(scene->attractor_strength);
+    j->uniform_inverse_mass = motus__splat(scene->mass > 0 ? MOTUS_R(1.0) / scene->mass : MOTUS_R(1.0));
+    j->kept = motus__splat(kept);
+    j->rest_speed = motus__splat((motus_real)(MOTUS_REST_SPEED));
+    j->bounce = motus__splat(-scene->restitution);
+    j->h = motus__splat(h);
+    j->substep_dt = h;
+    j->half_h = motus__splat(h * MOTUS_R(0.5));
+    j->half_h2 = motus__splat(h * h * MOTUS_R(0.5));
+    j->sixth_h = motus__splat(h / MOTUS_R(6.0));
+    j->fr_drift_out = motus__splat(theta * MOTUS_R(0.5) * h);
+    j->fr_kick_out = motus__splat(theta * h);
+    j->fr_drift_in = motus__splat((1 - theta) * MOTUS_R(0.5) * h);
+    j->fr_kick_in = motus__splat((1 - 2 * theta) * h);
+    if (scene->method == MOTUS_EXACT_LINEAR_DRAG) {
+        /* c1 = (1 - e^-u)/k and c2 = (h - c1)/k with u = k*h, formed from k and h so that neither u nor
+           u^2 can overflow when the result does not (drag 1e38/s over 1e20 s is a particle at rest after
+           moving a/k^2); a series where u is small and h - c1 cancels. */
+        const motus_real k = scene->linear_drag, u = k * h;
+        motus_real decay = 1, c1 = h, c2 = h * h * MOTUS_R(0.5);
+        if (k > 0 && u < MOTUS_R(0.5)) {
+            /* c1 = h*sum (-u)^m/(m+1)!, c2 = h^2*sum (-u)^m/(m+2)!: 15 terms are below double rounding */
+            motus_real term1 = 1, term2 = MOTUS_R(0.5), sum1 = 1, sum2 = MOTUS_R(0.5);
+            int m;
+            for (m = 1; m <= 14; ++m) {
+                term1 *= -u / (motus_real)(m + 1);
+                term2 *= -u / (motus_real)(m + 2);
+                sum1 += term1;
+                sum2 += term2;
+            }
+            decay = MOTUS_EXP(-u);
+            c1 = h * sum1;
+            c2 = h * h * sum2;
+            if (!motus_real_is_finite(c2)) c2 = h * (h * sum2);
+        } else if (k > 0) {
+            decay = motus_real_is_finite(u) ? MOTUS_EXP(-u) : 0;
+            c1 = (motus_real_is_finite(u) ? -MOTUS_EXPM1(-u) : 1) / k;
+            c2 = (h - c1) / k;
+        }
+        j->exact_decay = motus__splat(decay);
+        j->exact_c1 = motus__splat(c1);
+        j->exact_c2 = motus__splat(c2);
+    }
+}
+
+/* Stage times as fractions of the substep, for the callback. */
+static motus_real motus__stage_time(motus_method method, int stage) {
+    const motus_real theta = (motus_real)1.3512071919596576340476878089715;
+    switch (method) {
+    case MOTUS_POSITION_VERLET: return MOTUS_R(0.5);
+    case MOTUS_VELOCITY_VERLET:
+    case MOTUS_LEAPFROG: return (motus_real)stage;
+    case MOTUS_MIDPOINT: return MOTUS_R(0.5) * (motus_real)stage;
+    case MOTUS_RK4: return stage == 0 ? 0 : stage == 3 ? MOTUS_R(1.0) : MOTUS_R(0.5);
+    case MOTUS_FOREST_RUTH: return stage == 0 ? theta * MOTUS_R(0.5) : stage == 1 ? MOTUS_R(0.5) : 1 - theta * MOTUS_R(0.5);
+    default: return 0;
+    }
+}
+
+/* A spring's force on its end a, from the recorded stage state (see motus_spring). The length is formed
+   from d/s, s = max|d_i|, so that it does not overflow where the force does not (k = L = 1e20 at rest). */
+static void motus__spring_force(const motus_spring *s, const motus_real *d, const motus_real *relative, int dims,
+                                motus_real *force) {
+    motus_real scale = 0, u2 = 0, length, along = 0, magnitude, unit[3];
+    int e;
+    if (s->rest_length == 0 && s->damping == 0) { /* -k*d: no square root */
+        for (e = 0; e < dims; ++e) force[e] = d[e] * -s->stiffness;
+        return;
+    }
+    for (e = 0; e < dims; ++e) {
+        const motus_real m = d[e] < 0 ? -d[e] : d[e];
+        if (m > scale) scale = m;
+    }
+    if (!(scale > 0)) { /* both ends at one point: no direction to push along (or NaN: passed on) */
+        for (e = 0; e < dims; ++e) force[e] = d[e] * -s->stiffness + (scale - scale);
+        return;
+    }
+    for (e = 0; e < dims; ++e) {
+        unit[e] = d[e] / scale;
+        u2 += unit[e] * unit[e];
+    }
+    u2 = MOTUS_SQRT(u2);
+    length = scale * u2;
+    for (e = 0; e < dims; ++e) {
+        unit[e] = unit[e] / u2;
+        along += relative[e] * unit[e];
+    }
+    magnitude = s->stiffness * (length - s->rest_length) + s->damping * along;
+    for (e = 0; e < dims; ++e) force[e] = unit[e] * -magnitude;
+}
+
+/* The coupled forces of one stage into stage_force[stage]: zero, the callback, then the springs. */
+static void motus__stage_forces(const motus__job *j, const motus_scene *scene, int dims, int count, int stage,
+                                motus_real time) {
+    motus_real *force[3] = {NULL, NULL, NULL};
+    int d, k;
+    for (d = 0; d < dims; ++d) {
+        force[d] = (motus_real *)(uintptr_t)j->stage_force[stage][d];
+        memset(force[d], 0, (size_t)count * sizeof(motus_real));
+    }
+    if (scene->force_callback) {
+        motus_force_query query;
+        memset(&query, 0, sizeof query);
+        query.dimensions = dims;
+        query.count = count;
+        query.stage = stage;
+        query.time = time;
+        for (d = 0; d < dims; ++d) {
+            query.position[d] = j->stage_x[d];
+            query.velocity[d] = j->stage_v[d];
+            query.force[d] = force[d];
+        }
+        scene->force_callback(scene->user_data, &query);
+    }
+    for (k = 0; k < scene->spring_count; ++k) {
+        const motus_spring *s = &scene->springs[k];
+        const motus_real anchor[3] = {s->anchor.x, s->anchor.y, s->anchor.z};
+        motus_real dx[3], relative[3], f[3];
+        for (d = 0; d < dims; ++d) {
+            dx[d] = j->stage_x[d][s->a] - (s->b < 0 ? anchor[d] : j->stage_x[d][s->b]);
+            relative[d] = j->stage_v[d][s->a] - (s->b < 0 ? 0 : j->stage_v[d][s->b]);
+        }
+        motus__spring_force(s, dx, relative, dims, f);
+        for (d = 0; d < dims; ++d) {
+            force[d][s->a] += f[d];
+            if (s->b >= 0) force[d][s->b] -= f[d];
         }
     }
-    motus__report(report, index, MOTUS_FIELD_INVERSE_MASS, -1); /* finite but negative */
-    return result;
+}
+
+/* The checks every step makes before it reads a particle: O(1), or O(springs). */
+static motus_result motus__step_checks(const motus_scene *scene, const motus_state *state, motus_real dt, int *dims) {
+    motus_result result;
+    if (!scene) return MOTUS_ERROR_NULL_POINTER;
+    result = motus__state_shape(state, dims, NULL);
+    if (result != MOTUS_OK) return result;
+    if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
+    return motus_scene_check(scene, *dims, state->count, NULL);
+}
+
+/* Runs the kernel over [first, end), after the checked build's look at the data. */
+static motus_result motus__run(motus__job *j, const motus_scene *scene, const motus_state *state, int dims, int first,
+                               int end) {
+    const int fast = j->stride == 1 && !(j->terms & MOTUS__T_COUPLED);
+    const motus__kernel_function kernel = motus__kernel_for(scene->method, dims, !fast);
+#ifdef MOTUS_CHECKED
+    motus_result result = motus_state_check(scene, state, first, end - first, NULL);
+    if (result != MOTUS_OK) return result;
+    j->terms |= MOTUS__T_DRY;
+    if (motus__kernel_for(scene->method, dims, 1)(j, first, end)) return MOTUS_ERROR_OVERFLOW;
+    j->terms &= ~(unsigned)MOTUS__T_DRY;
+#else
+    (void)state;
+#endif
+    return kernel(j, first, end) ? MOTUS_ERROR_NOT_FINITE : MOTUS_OK;
+}
+
+MOTUS_API motus_result motus_step_range(const motus_scene *scene, const motus_state *state, int first, int count,
+                                        motus_real dt) {
+    motus__job job;
+    motus_result result;
+    int dims = 2;
+    result = motus__step_checks(scene, state, dt, &dims);
+    if (result != MOTUS_OK) return result;
+    if (first < 0 || count < 0 || first > state->count || count > state->count - first) return MOTUS_ERROR_INVALID_COUNT;
+    if (motus__coupled(scene)) return MOTUS_ERROR_UNSUPPORTED;
+    if (count == 0 || dt == 0) return MOTUS_OK;
+    motus__job_init(&job, scene, state, dims, dt);
+    return motus__run(&job, scene, state, dims, first, first + count);
+}
+
+MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *state, motus_real dt, void *scratch,
+                                  size_t scratch_bytes) {
+    motus__job job;
+    motus_result result;
+    motus_real *memory = (motus_real *)scratch;
+    int dims = 2, d, stage, substep, substeps, evaluations, count;
+    result = motus__step_checks(scene, state, dt, &dims);
+    if (result != MOTUS_OK) return result;
+    count = state->count;
+    if (!motus__coupled(scene)) {
+        if (count == 0 || dt == 0) return MOTUS_OK;
+        motus__job_init(&job, scene, state, dims, dt);
+        return motus__run(&job, scene, state, dims, 0, count);
+    }
+    /* Coupled: every stage a pass over caller memory (see COUPLING in >>methods). */
+    if (scratch_bytes < motus_scratch_size(scene, state) || (!scratch && count > 0) ||
+        (uintptr_t)scratch % offsetof(motus__align_probe, r) != 0)
+        return MOTUS_ERROR_SCRATCH_TOO_SMALL;
+    if (count == 0 || dt == 0) return MOTUS_OK;
+    motus__job_init(&job, scene, state, dims, dt);
+#ifdef MOTUS_CHECKED
+    result = motus_state_check(scene, state, 0, count, NULL);
+    if (result != MOTUS_OK) return result;
+#endif
+    evaluations = motus_method_evaluations(scene->method);
+    for (d = 0; d < dims; ++d) {
+        job.stage_x[d] = memory + (size_t)d * (size_t)count;
+        job.stage_v[d] = memory + (size_t)(dims + d) * (size_t)count;
+        for (stage = 0; stage < evaluations; ++stage)
+            job.stage_force[stage][d] = memory + (size_t)((2 + stage) * dims + d) * (size_t)count;
+    }
+    substeps = job.substeps;
+    job.substeps = 1;
+    for (substep = 0; substep < substeps; ++substep) {
+        const motus_real h = job.substep_dt;
+        for (stage = 0; stage < evaluations; ++stage) {
+            job.record_stage = stage;
+            (void)motus__kernel_for(scene->method, dims, 1)(&job, 0, count);
+            motus__stage_forces(&job, scene, dims, count, stage, motus__stage_time(scene->method, stage) * h);
+        }
+        job.record_stage = -1;
+        job.apply_damping = substep == substeps - 1;
+        if (motus__kernel_for(scene->method, dims, 1)(&job, 0, count)) return MOTUS_ERROR_NOT_FINITE;
+    }
+    return MOTUS_OK;
+}
+
+MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const motus_state *state,
+                                                 motus_real *max_dt, void *scratch, size_t scratch_bytes) {
+    motus_real omega_squared = 0, spring_decay = 0, fastest = 0, decay, *sums = (motus_real *)scratch;
+    motus_result result;
+    ptrdiff_t stride;
+    int dims = 2, i, d, k, count;
+    if (!max_dt) return MOTUS_ERROR_NULL_POINTER;
+    result = motus__step_checks(scene, state, 0, &dims);
+    if (result != MOTUS_OK) return result;
+    count = state->count;
+    stride = state->stride == 0 ? 1 : state->stride;
+    if (scene->method == MOTUS_EXACT_LINEAR_DRAG) {
+        *max_dt = (motus_real)HUGE_VAL;
+        return MOTUS_OK;
+    }
+    if (scene->spring_count > 0 &&
+        (scratch_bytes < 2 * (size_t)count * sizeof(motus_real) || !scratch ||
+         (uintptr_t)scratch % offsetof(motus__align_probe, r) != 0))
+        return MOTUS_ERROR_SCRATCH_TOO_SMALL;
+    for (i = 0; i < count && state->inverse_mass; ++i) {
+        const motus_real w = state->inverse_mass[(ptrdiff_t)i * stride];
+        if (!motus_real_is_finite(w)) return MOTUS_ERROR_NOT_FINITE;
+        if (w < 0) return MOTUS_ERROR_INVALID_MASS;
+    }
+    if (scene->quadratic_drag != 0)
+        for (i = 0; i < count; ++i) {
+            motus_real speed2 = 0, speed;
+            for (d = 0; d < dims; ++d) {
+                const motus_real v = state->velocity[d][(ptrdiff_t)i * stride];
+                if (!motus_real_is_finite(v)) return MOTUS_ERROR_NOT_FINITE;
+                speed2 += v * v;
+            }
+            speed = MOTUS_SQRT(speed2);
+            if (!motus_real_is_finite(speed)) return MOTUS_ERROR_OVERFLOW;
+            if (speed > fastest) fastest = speed;
+        }
+    if (scene->spring_count > 0) {
+        const motus_real uniform = scene->mass > 0 ? MOTUS_R(1.0) / scene->mass : MOTUS_R(1.0);
+#define MOTUS__W(p) (state->inverse_mass ? state->inverse_mass[(ptrdiff_t)(p) * stride] : uniform)
+        for (i = 0; i < 2 * count; ++i) sums[i] = 0;
+        for (k = 0; k < scene->spring_count; ++k) {
+            const motus_spring *s = &scene->springs[k];
+            const motus_real both = MOTUS__W(s->a) + (s->b < 0 ? 0 : MOTUS__W(s->b));
+            sums[2 * s->a] += s->stiffness * both;
+            sums[2 * s->a + 1] += s->damping * both;
+            if (s->b >= 0) {
+                sums[2 * s->b] += s->stiffness * both;
+                sums[2 * s->b + 1] += s->damping * both;
+            }
+        }
+        for (i = 0; i < count; ++i) {
+            if (MOTUS__W(i) == 0) continue; /* nothing moves it: its column bounds no motion */
+            if (sums[2 * i] > omega_squared) omega_squared = sums[2 * i];
+            if (sums[2 * i + 1] > spring_decay) spring_decay = sums[2 * i + 1];
+        }
+#undef MOTUS__W
+    }
+    decay = scene->linear_drag + 2 * scene->quadratic_drag * fastest + spring_decay;
+    *max_dt = motus__stable_dt(scene->method, omega_squared, decay);
+    return MOTUS_OK;
 }
 
 #ifdef __cplusplus
 } /* extern "C" */
 #endif
 
-/* The contraction setting of the code that includes this header, back as it was (see Configuration). */
-#if defined(MOTUS__FP_CONTRACT_PRAGMA_CLANG)
+#if defined(MOTUS__ENGINE_PRAGMA_CLANG)
 #pragma float_control(pop)
-#elif defined(MOTUS__FP_CONTRACT_PRAGMA_GCC)
+#elif defined(MOTUS__ENGINE_PRAGMA_GCC)
 #pragma GCC pop_options
 #endif
-
-#endif /* MOTUS_H */
-
-/*
-------------------------------------------------------------------------------
-MIT License
-
-Copyright (c) 2026 the motus developers
-
-Permission is hereby granted, free of charge, to any person obtaining a copy of
-this software and associated documentation files (the "Software"), to deal in
-the Software without restriction, including without limitation the rights to
-use, copy, modify, merge, publish, distribute, sublicense, and/or sell copies
-of the Software, and to permit persons to whom the Software is furnished to do
-so, subject to the following conditions:
-
-The above copyright notice and this permission notice shall be included in all
-copies or substantial portions of the Software.
-
-THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR
-IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY,
-FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN NO EVENT SHALL THE
-AUTHORS OR COPYRIGHT HOLDERS BE LIABLE FOR ANY CLAIM, DAMAGES OR OTHER
-LIABILITY, WHETHER IN AN ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM,
-OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE
-SOFTWARE.
-------------------------------------------------------------------------------
-*/
+#endif /* MOTUS_IMPLEMENTATION */
