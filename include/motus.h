@@ -597,10 +597,12 @@ MOTUS_DEF motus_result motus__step(motus_vec3 *position, motus_vec3 *velocity, m
     motus_vec3 v, x;
     if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
-    /* (F*(1/m))*dt, in the engine's order, so the two agree bit for bit. */
-    v.x = velocity->x + MOTUS__ROUND(MOTUS__ROUND(force.x * inverse_mass) * dt);
-    v.y = velocity->y + MOTUS__ROUND(MOTUS__ROUND(force.y * inverse_mass) * dt);
-    v.z = velocity->z + MOTUS__ROUND(MOTUS__ROUND(force.z * inverse_mass) * dt);
+    /* a = (F*(1/m) + g) - k*v with g = 0 and k = 0, as the engine computes it for a scene without gravity
+       and drag (adding a zero and subtracting a v*0 change nothing but the sign of a zero), so that the two
+       agree bit for bit, signed zeros included. */
+    v.x = velocity->x + MOTUS__ROUND(((MOTUS__ROUND(force.x * inverse_mass) + 0) - MOTUS__ROUND(velocity->x * 0)) * dt);
+    v.y = velocity->y + MOTUS__ROUND(((MOTUS__ROUND(force.y * inverse_mass) + 0) - MOTUS__ROUND(velocity->y * 0)) * dt);
+    v.z = velocity->z + MOTUS__ROUND(((MOTUS__ROUND(force.z * inverse_mass) + 0) - MOTUS__ROUND(velocity->z * 0)) * dt);
     if (inverse_mass == 0) v = *velocity; /* immovable: forces do not change its velocity */
     x.x = position->x + MOTUS__ROUND(v.x * dt);
     x.y = position->y + MOTUS__ROUND(v.y * dt);
@@ -1274,6 +1276,15 @@ MOTUS__KI motus_real motus__lane_sum(motus__lane x) {
 #endif
 }
 
+/* The statements once per dimension with d a constant (the third only in 3D). A loop over d would keep the
+   lane arrays in memory at -O2 (GCC unrolls such loops only after it has decided what lives in registers). */
+#define MOTUS__EACH_D(...)                                                                                       \
+    do {                                                                                                         \
+        { const int d = 0; __VA_ARGS__ }                                                                         \
+        { const int d = 1; __VA_ARGS__ }                                                                         \
+        if (dims == 3) { const int d = 2; __VA_ARGS__ }                                                          \
+    } while (0)
+
 /* ---- the job: the scene and the state as the kernels read them, made once per call ---- */
 enum {
     MOTUS__T_GRAVITY = 1 << 0,
@@ -1287,10 +1298,21 @@ enum {
     MOTUS__T_COUPLED = 1 << 8,  /* springs or a callback: stage forces in scratch */
     MOTUS__T_DRY = 1 << 9       /* MOTUS_CHECKED's run that stores nothing */
 };
+/* The terms a kernel sees. A fast kernel is compiled for one `shape`: whether the state has force and
+   inverse-mass arrays (the loads it makes), no coupling, no dry run; the other terms it tests at run time
+   (a branch per group on a flag that does not change: the predictor makes it cheap), except gravity and
+   linear drag, which every kernel always computes (a = F/m + g - k*v, with g = 0 and k = 0 when off: two
+   operations cost less than a branch, and every path computes the same bits). The general kernel
+   (MOTUS__SHAPE_ANY) reads everything from the job. */
+#define MOTUS__SHAPE_ANY 0x80000000u
+#define MOTUS__TERMS(j, shape)                                                                                   \
+    ((shape) == MOTUS__SHAPE_ANY ? (j)->terms                                                                    \
+                                 : (((j)->terms & ~(unsigned)(MOTUS__T_FORCES | MOTUS__T_MASS | MOTUS__T_COUPLED |  \
+                                                             MOTUS__T_DRY)) | (shape)))
 
 typedef struct motus__job {
     unsigned terms;
-    int substeps, record_stage, apply_damping;
+    int dims, substeps, record_stage, apply_damping;
     motus_real substep_dt; /* h as a number, for the callback's stage times */
     ptrdiff_t stride;
     motus_real *x[3], *v[3];
@@ -1362,194 +1384,189 @@ static MOTUS__NOINLINE void motus__costly_terms_3(const motus__job *j, const mot
    off are skipped, not added as zero (which would turn a -0 into +0): the same bits whatever path. */
 MOTUS__KI void motus__acceleration(const motus__job *j, const motus__lane *x, const motus__lane *v,
                                    const motus__lane *base, motus__lane inverse_mass, motus__mask movable,
-                                   motus__lane *a, const int dims, const int coupled, int stage, int i, int n) {
-    const unsigned t = j->terms;
+                                   motus__lane *a, const int dims, const int coupled, const unsigned shape, int stage,
+                                   int i, int n) {
+    const unsigned t = MOTUS__TERMS(j, shape);
     const motus__lane zero = motus__splat(0);
-    int d;
-    for (d = 0; d < dims; ++d) {
-        a[d] = base[d];
-        if (t & MOTUS__T_GRAVITY) a[d] = a[d] + j->gravity[d];
-        if (t & MOTUS__T_LINEAR_DRAG) a[d] = a[d] - v[d] * j->linear_drag;
-    }
+    MOTUS__EACH_D(a[d] = (base[d] + j->gravity[d]) - v[d] * j->linear_drag;);
     if (t & (MOTUS__T_QUADRATIC_DRAG | MOTUS__T_ATTRACTOR)) {
-        if (dims == 2) motus__costly_terms_2(j, x, v, a);
-        else motus__costly_terms_3(j, x, v, a);
+        /* Copies go to the call, so that x, v and a themselves never have their address taken and stay in
+           registers on the paths that do not make it. */
+        motus__lane x_copy[3], v_copy[3], a_copy[3];
+        MOTUS__EACH_D(
+            x_copy[d] = x[d];
+            v_copy[d] = v[d];
+            a_copy[d] = a[d];
+    );
+        if (dims == 2) motus__costly_terms_2(j, x_copy, v_copy, a_copy);
+        else motus__costly_terms_3(j, x_copy, v_copy, a_copy);
+        MOTUS__EACH_D(a[d] = a_copy[d];);
     }
     if (coupled && (t & MOTUS__T_COUPLED))
-        for (d = 0; d < dims; ++d) a[d] = a[d] + motus__load(j->stage_force[stage][d] + i, 1, n) * inverse_mass;
+        MOTUS__EACH_D(if (j->stage_force[stage][d]) a[d] = a[d] + motus__load(j->stage_force[stage][d] + i, 1, n) * inverse_mass;);
     if (t & MOTUS__T_MASS) /* immovable: no acceleration (a NaN still shows in the check) */
-        for (d = 0; d < dims; ++d) a[d] = motus__select(movable, a[d], zero);
+        MOTUS__EACH_D(a[d] = motus__select(movable, a[d], zero););
 }
 
 /* One evaluation of the forces at stage `stage`. In a pass that records that stage (coupled scenes), the
    stage's state is stored for the springs and the callback instead, and the method stops there: returns 1. */
 MOTUS__KI int motus__evaluate(const motus__job *j, int stage, const motus__lane *x, const motus__lane *v,
                               const motus__lane *base, motus__lane inverse_mass, motus__mask movable, motus__lane *a,
-                              const int dims, const int coupled, int i, int n) {
-    int d;
+                              const int dims, const int coupled, const unsigned shape, int i, int n) {
     if (coupled && j->record_stage == stage) {
-        for (d = 0; d < dims; ++d) {
-            motus__store(j->stage_x[d] + i, x[d], 1, n);
-            motus__store(j->stage_v[d] + i, v[d], 1, n);
-        }
+        MOTUS__EACH_D(if (j->stage_x[d]) {
+                motus__store(j->stage_x[d] + i, x[d], 1, n);
+                motus__store(j->stage_v[d] + i, v[d], 1, n);
+            });
         return 1;
     }
-    motus__acceleration(j, x, v, base, inverse_mass, movable, a, dims, coupled, stage, i, n);
+    motus__acceleration(j, x, v, base, inverse_mass, movable, a, dims, coupled, shape, stage, i, n);
     return 0;
 }
 #define MOTUS__EVALUATE(stage, xs, vs, a)                                                                        \
-    if (motus__evaluate(j, stage, xs, vs, base, inverse_mass, movable, a, dims, coupled, i, n)) return 1
+    if (motus__evaluate(j, stage, xs, vs, base, inverse_mass, movable, a, dims, coupled, shape, i, n)) return 1
 
 /* ---- the methods, one function each (see >>methods for the formulas, orders and limits) ----
    x, v: the state, updated in place; each returns 1 if it stopped at a recorded stage. */
 #define MOTUS__METHOD_ARGS                                                                                       \
     const motus__job *j, motus__lane *x, motus__lane *v, const motus__lane *base, motus__lane inverse_mass,      \
-        motus__mask movable, const int dims, const int coupled, int i, int n
+        motus__mask movable, const int dims, const int coupled, const unsigned shape, int i, int n
 MOTUS__KI int motus__semi_implicit_euler(MOTUS__METHOD_ARGS) {
     motus__lane a[3];
-    int d;
     MOTUS__EVALUATE(0, x, v, a);
-    for (d = 0; d < dims; ++d) {
+    MOTUS__EACH_D(
         v[d] = v[d] + a[d] * j->h;
         x[d] = x[d] + v[d] * j->h;
-    }
+    );
     return 0;
 }
 MOTUS__KI int motus__explicit_euler(MOTUS__METHOD_ARGS) {
     motus__lane a[3];
-    int d;
     MOTUS__EVALUATE(0, x, v, a);
-    for (d = 0; d < dims; ++d) {
+    MOTUS__EACH_D(
         x[d] = x[d] + v[d] * j->h;
         v[d] = v[d] + a[d] * j->h;
-    }
+    );
     return 0;
 }
 MOTUS__KI int motus__position_verlet(MOTUS__METHOD_ARGS) {
     motus__lane a[3];
-    int d;
-    for (d = 0; d < dims; ++d) x[d] = x[d] + v[d] * j->half_h;
+    MOTUS__EACH_D(x[d] = x[d] + v[d] * j->half_h;);
     MOTUS__EVALUATE(0, x, v, a);
-    for (d = 0; d < dims; ++d) {
+    MOTUS__EACH_D(
         v[d] = v[d] + a[d] * j->h;
         x[d] = x[d] + v[d] * j->half_h;
-    }
+    );
     return 0;
 }
 MOTUS__KI int motus__velocity_verlet(MOTUS__METHOD_ARGS) {
     motus__lane a0[3], a1[3], predicted[3];
-    int d;
     MOTUS__EVALUATE(0, x, v, a0);
-    for (d = 0; d < dims; ++d) {
+    MOTUS__EACH_D(
         x[d] = x[d] + v[d] * j->h + a0[d] * j->half_h2;
         predicted[d] = v[d] + a0[d] * j->h;
-    }
+    );
     MOTUS__EVALUATE(1, x, predicted, a1);
-    for (d = 0; d < dims; ++d) v[d] = v[d] + (a0[d] + a1[d]) * j->half_h;
+    MOTUS__EACH_D(v[d] = v[d] + (a0[d] + a1[d]) * j->half_h;);
     return 0;
 }
 MOTUS__KI int motus__leapfrog(MOTUS__METHOD_ARGS) {
     motus__lane a0[3], a1[3], predicted[3];
-    int d;
     MOTUS__EVALUATE(0, x, v, a0);
-    for (d = 0; d < dims; ++d) {
+    MOTUS__EACH_D(
         v[d] = v[d] + a0[d] * j->half_h;
         x[d] = x[d] + v[d] * j->h;
         predicted[d] = v[d] + a0[d] * j->half_h;
-    }
+    );
     MOTUS__EVALUATE(1, x, predicted, a1);
-    for (d = 0; d < dims; ++d) v[d] = v[d] + a1[d] * j->half_h;
+    MOTUS__EACH_D(v[d] = v[d] + a1[d] * j->half_h;);
     return 0;
 }
 MOTUS__KI int motus__midpoint(MOTUS__METHOD_ARGS) {
     motus__lane a0[3], a1[3], xm[3], vm[3];
-    int d;
     MOTUS__EVALUATE(0, x, v, a0);
-    for (d = 0; d < dims; ++d) {
+    MOTUS__EACH_D(
         xm[d] = x[d] + v[d] * j->half_h;
         vm[d] = v[d] + a0[d] * j->half_h;
-    }
+    );
     MOTUS__EVALUATE(1, xm, vm, a1);
-    for (d = 0; d < dims; ++d) {
+    MOTUS__EACH_D(
         x[d] = x[d] + vm[d] * j->h;
         v[d] = v[d] + a1[d] * j->h;
-    }
+    );
     return 0;
 }
 MOTUS__KI int motus__rk4(MOTUS__METHOD_ARGS) {
     motus__lane a[3], xs[3], vs[3], sum_v[3], sum_a[3];
     const motus__lane two = motus__splat(2);
-    int d;
     MOTUS__EVALUATE(0, x, v, a);
-    for (d = 0; d < dims; ++d) { /* k1 = (v, a1) */
+    MOTUS__EACH_D( /* k1 = (v, a1) */
         sum_v[d] = v[d];
         sum_a[d] = a[d];
         xs[d] = x[d] + v[d] * j->half_h;
         vs[d] = v[d] + a[d] * j->half_h;
-    }
+    );
     MOTUS__EVALUATE(1, xs, vs, a);
-    for (d = 0; d < dims; ++d) { /* k2 = (vs, a2) */
+    MOTUS__EACH_D( /* k2 = (vs, a2) */
         sum_v[d] = sum_v[d] + vs[d] * two;
         sum_a[d] = sum_a[d] + a[d] * two;
         xs[d] = x[d] + vs[d] * j->half_h;
         vs[d] = v[d] + a[d] * j->half_h;
-    }
+    );
     MOTUS__EVALUATE(2, xs, vs, a);
-    for (d = 0; d < dims; ++d) { /* k3 */
+    MOTUS__EACH_D( /* k3 */
         sum_v[d] = sum_v[d] + vs[d] * two;
         sum_a[d] = sum_a[d] + a[d] * two;
         xs[d] = x[d] + vs[d] * j->h;
         vs[d] = v[d] + a[d] * j->h;
-    }
+    );
     MOTUS__EVALUATE(3, xs, vs, a);
-    for (d = 0; d < dims; ++d) { /* k4, then the weighted sum 1, 2, 2, 1 */
+    MOTUS__EACH_D( /* k4, then the weighted sum 1, 2, 2, 1 */
         x[d] = x[d] + (sum_v[d] + vs[d]) * j->sixth_h;
         v[d] = v[d] + (sum_a[d] + a[d]) * j->sixth_h;
-    }
+    );
     return 0;
 }
 MOTUS__KI int motus__forest_ruth(MOTUS__METHOD_ARGS) {
     motus__lane a[3];
-    int d;
-    for (d = 0; d < dims; ++d) x[d] = x[d] + v[d] * j->fr_drift_out;
+    MOTUS__EACH_D(x[d] = x[d] + v[d] * j->fr_drift_out;);
     MOTUS__EVALUATE(0, x, v, a);
-    for (d = 0; d < dims; ++d) {
+    MOTUS__EACH_D(
         v[d] = v[d] + a[d] * j->fr_kick_out;
         x[d] = x[d] + v[d] * j->fr_drift_in;
-    }
+    );
     MOTUS__EVALUATE(1, x, v, a);
-    for (d = 0; d < dims; ++d) {
+    MOTUS__EACH_D(
         v[d] = v[d] + a[d] * j->fr_kick_in;
         x[d] = x[d] + v[d] * j->fr_drift_in;
-    }
+    );
     MOTUS__EVALUATE(2, x, v, a);
-    for (d = 0; d < dims; ++d) {
+    MOTUS__EACH_D(
         v[d] = v[d] + a[d] * j->fr_kick_out;
         x[d] = x[d] + v[d] * j->fr_drift_out;
-    }
+    );
     return 0;
 }
 /* v = v0*e^-u + a*c1, x = x0 + v0*c1 + a*c2 (see >>methods): gravity and the accumulated force make a, the
    linear drag is in the coefficients. */
 MOTUS__KI int motus__exact_linear_drag(MOTUS__METHOD_ARGS) {
     const motus__lane zero = motus__splat(0);
-    int d;
+    const unsigned t = MOTUS__TERMS(j, shape);
     (void)coupled;
     (void)i;
     (void)n;
     (void)inverse_mass;
-    for (d = 0; d < dims; ++d) {
-        motus__lane a = base[d];
+    MOTUS__EACH_D(
+        motus__lane a = base[d] + j->gravity[d];
         const motus__lane v0 = v[d];
-        if (j->terms & MOTUS__T_GRAVITY) a = a + j->gravity[d];
-        if (j->terms & MOTUS__T_MASS) a = motus__select(movable, a, zero);
+        if (t & MOTUS__T_MASS) a = motus__select(movable, a, zero);
         v[d] = v0 * j->exact_decay + a * j->exact_c1;
         x[d] = x[d] + v0 * j->exact_c1 + a * j->exact_c2;
-        if (j->terms & MOTUS__T_MASS) { /* immovable: drag does not act either; it drifts */
+        if (t & MOTUS__T_MASS) { /* immovable: drag does not act either; it drifts */
             v[d] = motus__select(movable, v[d], v0);
             x[d] = motus__select(movable, x[d], x[d] - v0 * j->exact_c1 + v0 * j->h);
         }
-    }
+    );
     return 0;
 }
 
@@ -1557,8 +1574,7 @@ MOTUS__KI int motus__exact_linear_drag(MOTUS__METHOD_ARGS) {
    -restitution; a particle that overshot by more than the box is clamped to the wall (as
    motus_particle_bounce). Only where the position is finite: an overflow must stay visible to the check. */
 MOTUS__KI void motus__walls(const motus__job *j, motus__lane *x, motus__lane *v, const int dims) {
-    int d;
-    for (d = 0; d < dims; ++d) {
+    MOTUS__EACH_D(
         const motus__mask finite = (motus__mask)(x[d] >= motus__splat(-MOTUS__REAL_MAX)) &
                                    (motus__mask)(x[d] <= motus__splat(MOTUS__REAL_MAX));
         motus__mask below = x[d] < j->bounds_min[d], above;
@@ -1569,109 +1585,163 @@ MOTUS__KI void motus__walls(const motus__job *j, motus__lane *x, motus__lane *v,
         v[d] = motus__select(above, v[d] * j->bounce, v[d]);
         x[d] = motus__select((x[d] < j->bounds_min[d]) & finite, j->bounds_min[d], x[d]);
         x[d] = motus__select((x[d] > j->bounds_max[d]) & finite, j->bounds_max[d], x[d]);
-    }
+    );
 }
 
-/* MOTUS__LANES particles (n of them real) from index i: load, every substep's method and walls, the
-   damping, the check sum, store. dims, method, contiguous and coupled are constants where it is inlined:
-   the compiler drops what they exclude. The check sum is NaN or infinite if any new value is. */
-MOTUS__KI void motus__particles(const motus__job *j, int i, int n, motus__lane *check, const int dims,
-                                const int method, const int contiguous, const int coupled) {
-    const ptrdiff_t stride = contiguous ? 1 : j->stride;
-    const ptrdiff_t at = (ptrdiff_t)i * stride;
-    const unsigned t = j->terms;
-    const motus__lane zero = motus__splat(0);
-    motus__lane x[3], v[3], base[3], inverse_mass, v_start[3];
+/* Out of line, as the costly terms: walls are a dozen selects per component, a call per group is small. */
+static MOTUS__NOINLINE void motus__walls_2(const motus__job *j, motus__lane *x, motus__lane *v) { motus__walls(j, x, v, 2); }
+static MOTUS__NOINLINE void motus__walls_3(const motus__job *j, motus__lane *x, motus__lane *v) { motus__walls(j, x, v, 3); }
+
+/* MOTUS__LANES particles (n of them real) from index i, as registers: loaded, stepped by every substep's
+   method and walls, damped, checked, stored. dims and contiguous are constants where these are inlined, so
+   the compiler drops what they exclude. The general kernels run with dims 3 and read j->dims: a 2D state's
+   z is 0 in, discarded out, and every x and y operation is the one a 2D kernel does (adding a +0 square to
+   a sum of squares, or a 0 to a max of magnitudes, changes no bit), so the two agree bit for bit. */
+typedef struct motus__group {
+    motus__lane x[3], v[3], base[3], v_start[3], inverse_mass;
     motus__mask movable;
-    int d, s, stopped = 0;
-    inverse_mass = (t & MOTUS__T_MASS) ? motus__load(j->inverse_mass + at, stride, n) : j->uniform_inverse_mass;
-    movable = inverse_mass != zero;
-    for (d = 0; d < dims; ++d) {
-        x[d] = motus__load(j->x[d] + at, stride, n);
-        v[d] = motus__load(j->v[d] + at, stride, n);
-        base[d] = (t & MOTUS__T_FORCES) ? motus__load(j->f[d] + at, stride, n) * inverse_mass : zero;
+    ptrdiff_t stride, at;
+    int n;
+} motus__group;
+#define MOTUS__AXIS(d) (contiguous || (d) < j->dims) /* a component the state has */
+MOTUS__KI void motus__group_load(const motus__job *j, motus__group *g, int i, int n, const int dims,
+                                 const int contiguous, const unsigned shape) {
+    const unsigned t = MOTUS__TERMS(j, shape);
+    const motus__lane zero = motus__splat(0);
+    g->n = n;
+    g->stride = contiguous ? 1 : j->stride;
+    g->at = (ptrdiff_t)i * g->stride;
+    g->inverse_mass = (t & MOTUS__T_MASS) ? motus__load(j->inverse_mass + g->at, g->stride, n) : j->uniform_inverse_mass;
+    g->movable = g->inverse_mass != zero;
+    MOTUS__EACH_D(
+        const int axis = MOTUS__AXIS(d);
+        g->x[d] = axis ? motus__load(j->x[d] + g->at, g->stride, n) : zero;
+        g->v[d] = axis ? motus__load(j->v[d] + g->at, g->stride, n) : zero;
+        g->base[d] = (axis && (t & MOTUS__T_FORCES)) ? motus__load(j->f[d] + g->at, g->stride, n) * g->inverse_mass : zero;
+    );
+}
+/* After a substep's method: immovable velocities back as they were, the check sum, the walls. The check is
+   made before the walls, whose clamp would turn an infinite position into the wall. */
+MOTUS__KI void motus__group_substep_end(const motus__job *j, motus__group *g, motus__lane *check, const int dims,
+                                        const unsigned shape) {
+    const unsigned t = MOTUS__TERMS(j, shape);
+    if (t & MOTUS__T_MASS) /* nothing changed an immovable particle's velocity, not even a -0 into +0 */
+        MOTUS__EACH_D(g->v[d] = motus__select(g->movable, g->v[d], g->v_start[d]););
+    MOTUS__EACH_D(check[d] = (t & MOTUS__T_DRY) ? check[d] + ((g->x[d] - g->x[d]) + (g->v[d] - g->v[d]))
+                                      : check[d] + (g->x[d] + g->v[d]););
+    if (t & MOTUS__T_BOUNDS) { /* through copies, as the costly terms */
+        motus__lane x_copy[3], v_copy[3];
+        MOTUS__EACH_D(
+            x_copy[d] = g->x[d];
+            v_copy[d] = g->v[d];
+    );
+        if (dims == 2) motus__walls_2(j, x_copy, v_copy);
+        else motus__walls_3(j, x_copy, v_copy);
+        MOTUS__EACH_D(
+            g->x[d] = x_copy[d];
+            g->v[d] = v_copy[d];
+    );
     }
-    if (t & MOTUS__T_MASS) check[0] = check[0] + (inverse_mass - inverse_mass); /* a NaN mass shows */
-    for (s = 0; s < j->substeps && !stopped; ++s) {
-        for (d = 0; d < dims; ++d) v_start[d] = v[d];
-        switch (method) {
-        case MOTUS_SEMI_IMPLICIT_EULER: stopped = motus__semi_implicit_euler(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
-        case MOTUS_EXPLICIT_EULER: stopped = motus__explicit_euler(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
-        case MOTUS_POSITION_VERLET: stopped = motus__position_verlet(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
-        case MOTUS_VELOCITY_VERLET: stopped = motus__velocity_verlet(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
-        case MOTUS_LEAPFROG: stopped = motus__leapfrog(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
-        case MOTUS_MIDPOINT: stopped = motus__midpoint(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
-        case MOTUS_RK4: stopped = motus__rk4(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
-        case MOTUS_FOREST_RUTH: stopped = motus__forest_ruth(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
-        default: stopped = motus__exact_linear_drag(j, x, v, base, inverse_mass, movable, dims, coupled, i, n); break;
-        }
-        if (stopped) return; /* a recording pass: the stage state is stored, nothing else */
-        if (t & MOTUS__T_MASS) /* immovable: nothing changed its velocity, not even a -0 into +0 */
-            for (d = 0; d < dims; ++d) v[d] = motus__select(movable, v[d], v_start[d]);
-        /* Checked before the walls, whose clamp would turn an infinite position into the wall. */
-        for (d = 0; d < dims; ++d) check[d] = (t & MOTUS__T_DRY) ? check[d] + ((x[d] - x[d]) + (v[d] - v[d]))
-                                                                 : check[d] + (x[d] + v[d]);
-        if (t & MOTUS__T_BOUNDS) motus__walls(j, x, v, dims);
-    }
+}
+/* The damping (once per motus_step, after the last substep), then the stores. */
+MOTUS__KI void motus__group_finish(const motus__job *j, motus__group *g, const int dims, const int contiguous,
+                                   const unsigned shape) {
+    const unsigned t = MOTUS__TERMS(j, shape);
+    const motus__lane zero = motus__splat(0);
     if ((t & MOTUS__T_DAMPING) && j->apply_damping)
-        for (d = 0; d < dims; ++d) { /* as motus__damp: slow components to a zero of their sign */
-            motus__lane damped = v[d] * j->kept;
+        MOTUS__EACH_D( /* as motus__damp: slow components to a zero of their sign */
+            motus__lane damped = g->v[d] * j->kept;
             damped = motus__select((damped < j->rest_speed) & (damped > -j->rest_speed), damped * zero, damped);
-            v[d] = (t & MOTUS__T_MASS) ? motus__select(movable, damped, v[d]) : damped;
-        }
+            g->v[d] = (t & MOTUS__T_MASS) ? motus__select(g->movable, damped, g->v[d]) : damped;
+    );
     if (t & MOTUS__T_DRY) return;
-    for (d = 0; d < dims; ++d) {
-        motus__store(j->x[d] + at, x[d], stride, n);
-        motus__store(j->v[d] + at, v[d], stride, n);
-    }
+    MOTUS__EACH_D(if (MOTUS__AXIS(d)) {
+            motus__store(j->x[d] + g->at, g->x[d], g->stride, g->n);
+            motus__store(j->v[d] + g->at, g->v[d], g->stride, g->n);
+        });
 }
+#undef MOTUS__AXIS
 
-typedef int (*motus__kernel_function)(const motus__job *j, int first, int end);
-static motus__kernel_function motus__kernel_for(motus_method method, int dims, int general);
-
-/* A kernel: particles [first, end) in groups of MOTUS__LANES. Returns nonzero if the new state's check sum
-   is not finite. */
-MOTUS__KI int motus__kernel(const motus__job *j, int first, int end, const int dims, const int method,
-                            const int contiguous, const int coupled) {
-    motus__lane check[3];
-    int i;
-    int broken = 0;
-    check[0] = check[1] = check[2] = motus__splat(0);
-    if (contiguous) { /* whole groups here, with plain vector loads; the rest through the general kernel */
-        const int whole_end = first + (end - first) / MOTUS__LANES * MOTUS__LANES;
-        for (i = first; i < whole_end; i += MOTUS__LANES)
-            motus__particles(j, i, MOTUS__LANES, check, dims, method, 1, coupled);
-        if (whole_end < end) broken = motus__kernel_for((motus_method)method, dims, 1)(j, whole_end, end);
-    } else {
-        for (i = first; i < end; i += MOTUS__LANES) {
-            const int n = end - i < MOTUS__LANES ? end - i : MOTUS__LANES;
-            motus__particles(j, i, n, check, dims, method, 0, coupled);
-        }
-    }
-    return broken | !motus_real_is_finite(motus__lane_sum(check[0] + check[1] + check[2]));
-}
-
-/* One kernel per method and dimension count compiled for plain arrays with no coupling (the fast path), and
-   one that takes any stride and the coupled passes. 36 kernels in all: terms the scene lacks are skipped
-   by a branch on a loop-invariant flag, which the branch predictor makes free next to the loads. */
-#define MOTUS__KERNEL_PAIR(method, dims)                                                                         \
-    static int motus__fast_##method##_##dims(const motus__job *j, int first, int end) {                          \
-        return motus__kernel(j, first, end, dims, method, 1, 0);                                                 \
+/* A kernel: particles [first, end) in groups of MOTUS__LANES, each through `method` (a name: the macro
+   makes one group function per method, so that a kernel holds only its own method's code, even at -O0).
+   Returns nonzero if the new state's check sum is not finite. Fast kernels (plain arrays, no coupling)
+   take whole groups with plain vector loads and hand the rest to the general kernel. */
+#define MOTUS__KERNEL_OF(method)                                                                                 \
+    MOTUS__KI int motus__kernel_##method(const motus__job *job, int first, int end, const int dims,              \
+                                         const int contiguous, const int coupled, const unsigned shape) {        \
+        /* A local copy: the state arrays the kernel stores to could alias the job's reals in memory, which     \
+           would make the compiler reload every constant after every store; they cannot alias a local. */        \
+        const motus__job local = *job, *j = &local;                                                               \
+        motus__lane check[3];                                                                                    \
+        motus__group g;                                                                                          \
+        int i, s, broken = 0, end_here = end;                                                                    \
+        check[0] = check[1] = check[2] = motus__splat(0);                                                        \
+        if (contiguous) end_here = first + (end - first) / MOTUS__LANES * MOTUS__LANES;                          \
+        for (i = first; i < end_here; i += MOTUS__LANES) {                                                       \
+            const int n = contiguous ? MOTUS__LANES : (end - i < MOTUS__LANES ? end - i : MOTUS__LANES);         \
+            motus__group_load(j, &g, i, n, dims, contiguous, shape);                                             \
+            if (MOTUS__TERMS(j, shape) & MOTUS__T_MASS) check[0] = check[0] + (g.inverse_mass - g.inverse_mass);  \
+            for (s = 0; s < j->substeps; ++s) {                                                                  \
+                MOTUS__EACH_D(g.v_start[d] = g.v[d];);                                                           \
+                if (motus__##method(j, g.x, g.v, g.base, g.inverse_mass, g.movable, dims, coupled, shape, i, n)) \
+                    break;                                                                                       \
+                motus__group_substep_end(j, &g, check, dims, shape);                                             \
+            }                                                                                                    \
+            if (s == j->substeps) motus__group_finish(j, &g, dims, contiguous, shape);                           \
+        }                                                                                                        \
+        if (end_here < end) broken = motus__general_##method(j, end_here, end);                                  \
+        return broken | !motus_real_is_finite(motus__lane_sum(check[0] + check[1] + check[2]));                  \
     }                                                                                                            \
-    static int motus__general_##method##_##dims(const motus__job *j, int first, int end) {                       \
-        return motus__kernel(j, first, end, dims, method, 0, 1);                                                 \
+    static int motus__general_##method(const motus__job *j, int first, int end) {                                \
+        return motus__kernel_##method(j, first, end, 3, 0, 1, MOTUS__SHAPE_ANY);                                 \
+    }                                                                                                            \
+    MOTUS__FAST(method, 2, 0, 0) MOTUS__FAST(method, 2, 1, MOTUS__T_FORCES) MOTUS__FAST(method, 2, 2, MOTUS__T_MASS) \
+    MOTUS__FAST(method, 2, 3, MOTUS__T_FORCES | MOTUS__T_MASS)                                                   \
+    MOTUS__FAST(method, 3, 0, 0) MOTUS__FAST(method, 3, 1, MOTUS__T_FORCES) MOTUS__FAST(method, 3, 2, MOTUS__T_MASS) \
+    MOTUS__FAST(method, 3, 3, MOTUS__T_FORCES | MOTUS__T_MASS)
+#define MOTUS__FAST(method, dims, index, shape)                                                                  \
+    static int motus__fast##dims##_##index##_##method(const motus__job *j, int first, int end) {                 \
+        return motus__kernel_##method(j, first, end, dims, 1, 0, shape);                                         \
     }
-#define MOTUS__KERNEL_PAIRS(name, text, order, evaluations, limit) MOTUS__KERNEL_PAIR(name, 2) MOTUS__KERNEL_PAIR(name, 3)
-MOTUS__METHODS(MOTUS__KERNEL_PAIRS)
-#undef MOTUS__KERNEL_PAIRS
-#define MOTUS__KERNEL_ROW(name, text, order, evaluations, limit)                                                  \
-    {{motus__fast_##name##_2, motus__general_##name##_2}, {motus__fast_##name##_3, motus__general_##name##_3}},
-static motus__kernel_function motus__kernel_for(motus_method method, int dims, int general) {
-    static const motus__kernel_function kernels[MOTUS_METHOD_COUNT][2][2] = {MOTUS__METHODS(MOTUS__KERNEL_ROW)};
-    return kernels[method][dims - 2][general];
+#define MOTUS__DECLARE_GENERAL(method) static int motus__general_##method(const motus__job *j, int first, int end);
+MOTUS__DECLARE_GENERAL(semi_implicit_euler)
+MOTUS__DECLARE_GENERAL(explicit_euler)
+MOTUS__DECLARE_GENERAL(position_verlet)
+MOTUS__DECLARE_GENERAL(velocity_verlet)
+MOTUS__DECLARE_GENERAL(leapfrog)
+MOTUS__DECLARE_GENERAL(midpoint)
+MOTUS__DECLARE_GENERAL(rk4)
+MOTUS__DECLARE_GENERAL(forest_ruth)
+MOTUS__DECLARE_GENERAL(exact_linear_drag)
+MOTUS__KERNEL_OF(semi_implicit_euler)
+MOTUS__KERNEL_OF(explicit_euler)
+MOTUS__KERNEL_OF(position_verlet)
+MOTUS__KERNEL_OF(velocity_verlet)
+MOTUS__KERNEL_OF(leapfrog)
+MOTUS__KERNEL_OF(midpoint)
+MOTUS__KERNEL_OF(rk4)
+MOTUS__KERNEL_OF(forest_ruth)
+MOTUS__KERNEL_OF(exact_linear_drag)
+#undef MOTUS__KERNEL_OF
+#undef MOTUS__FAST
+#undef MOTUS__DECLARE_GENERAL
+
+/* The kernel for a method: fast for 2D or 3D plain arrays without coupling, else general. In the order of
+   motus_method (MOTUS__METHODS). */
+typedef int (*motus__kernel_function)(const motus__job *j, int first, int end);
+static motus__kernel_function motus__kernel_for(motus_method method, int dims, unsigned terms, int general) {
+#define MOTUS__ROW(name)                                                                                         \
+    {motus__fast2_0_##name, motus__fast2_1_##name, motus__fast2_2_##name, motus__fast2_3_##name,                 \
+     motus__fast3_0_##name, motus__fast3_1_##name, motus__fast3_2_##name, motus__fast3_3_##name,                 \
+     motus__general_##name},
+    static const motus__kernel_function kernels[MOTUS_METHOD_COUNT][9] = {
+        MOTUS__ROW(semi_implicit_euler) MOTUS__ROW(explicit_euler) MOTUS__ROW(position_verlet)
+        MOTUS__ROW(velocity_verlet) MOTUS__ROW(leapfrog) MOTUS__ROW(midpoint) MOTUS__ROW(rk4)
+        MOTUS__ROW(forest_ruth) MOTUS__ROW(exact_linear_drag)};
+#undef MOTUS__ROW
+    const int shape = ((terms & MOTUS__T_FORCES) ? 1 : 0) + ((terms & MOTUS__T_MASS) ? 2 : 0);
+    return kernels[method][general ? 8 : (dims - 2) * 4 + shape];
 }
-#undef MOTUS__KERNEL_ROW
-#undef MOTUS__KERNEL_PAIR
 
 /* ---- checks ---- */
 static int motus__negative(motus_real x) { return x < 0; } /* -0 is not negative; NaN is caught before */
@@ -1873,6 +1943,7 @@ static void motus__job_init(motus__job *j, const motus_scene *scene, const motus
     /* a subnormal dt split so finely that dt/n rounds to 0 would step nothing: fewer substeps */
     while (n > 1 && !(dt / (motus_real)n > 0)) --n;
     h = dt / (motus_real)n;
+    j->dims = dims;
     j->substeps = n;
     j->record_stage = -1;
     j->apply_damping = 1;
@@ -2044,12 +2115,12 @@ static motus_result motus__step_checks(const motus_scene *scene, const motus_sta
 static motus_result motus__run(motus__job *j, const motus_scene *scene, const motus_state *state, int dims, int first,
                                int end) {
     const int fast = j->stride == 1 && !(j->terms & MOTUS__T_COUPLED);
-    const motus__kernel_function kernel = motus__kernel_for(scene->method, dims, !fast);
+    const motus__kernel_function kernel = motus__kernel_for(scene->method, dims, j->terms, !fast);
 #ifdef MOTUS_CHECKED
     motus_result result = motus_state_check(scene, state, first, end - first, NULL);
     if (result != MOTUS_OK) return result;
     j->terms |= MOTUS__T_DRY;
-    if (motus__kernel_for(scene->method, dims, 1)(j, first, end)) return MOTUS_ERROR_OVERFLOW;
+    if (motus__kernel_for(scene->method, dims, 0, 1)(j, first, end)) return MOTUS_ERROR_OVERFLOW;
     j->terms &= ~(unsigned)MOTUS__T_DRY;
 #else
     (void)state;
@@ -2108,12 +2179,12 @@ MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *s
         const motus_real h = job.substep_dt;
         for (stage = 0; stage < evaluations; ++stage) {
             job.record_stage = stage;
-            (void)motus__kernel_for(scene->method, dims, 1)(&job, 0, count);
+            (void)motus__kernel_for(scene->method, dims, 0, 1)(&job, 0, count);
             motus__stage_forces(&job, scene, dims, count, stage, motus__stage_time(scene->method, stage) * h);
         }
         job.record_stage = -1;
         job.apply_damping = substep == substeps - 1;
-        if (motus__kernel_for(scene->method, dims, 1)(&job, 0, count)) return MOTUS_ERROR_NOT_FINITE;
+        if (motus__kernel_for(scene->method, dims, 0, 1)(&job, 0, count)) return MOTUS_ERROR_NOT_FINITE;
     }
     return MOTUS_OK;
 }
