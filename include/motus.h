@@ -388,6 +388,7 @@ MOTUS_DEF motus_result motus_particle3_damp_per_second(motus_particle3 *particle
                                                        motus_real dt);
 MOTUS_DEF motus_result motus_particle3_bounce(motus_particle3 *particle, motus_vec3 bounds_min, motus_vec3 bounds_max,
                                               motus_real restitution);
+MOTUS_DEF motus_real motus_damping_per_second_from_per_step(motus_real damping_per_step, motus_real steps_per_second);
 /* States over your arrays of particles (inline): */
 MOTUS_DEF motus_state motus_state_of_particles(motus_particle *particles, int count);
 MOTUS_DEF motus_state motus_state_of_particles3(motus_particle3 *particles, int count);
@@ -875,6 +876,14 @@ MOTUS_DEF motus_result motus_particle3_bounce(motus_particle3 *particle, motus_v
     return motus__bounce(&particle->position, &particle->velocity, bounds_min, bounds_max, restitution);
 }
 
+/* The damping per second that a per-step damping amounts to at a fixed rate: 1 - (1 - d)^rate. The
+   reference program's 0.01 a step (v *= 0.99) at 60 steps a second is 0.453 per second. NaN for arguments
+   out of range. */
+MOTUS_DEF motus_real motus_damping_per_second_from_per_step(motus_real damping_per_step, motus_real steps_per_second) {
+    if (!motus__fraction_valid(damping_per_step) || !motus__positive_finite(steps_per_second)) return (motus_real)NAN;
+    return MOTUS_R(1.0) - MOTUS_POW(MOTUS_R(1.0) - damping_per_step, steps_per_second);
+}
+
 /* ---- states over arrays of particles: the engine reads your structs through a stride ---- */
 MOTUS_DEF motus_state motus_state_of_particles(motus_particle *particles, int count) {
     motus_state s;
@@ -1298,17 +1307,25 @@ enum {
     MOTUS__T_COUPLED = 1 << 8,  /* springs or a callback: stage forces in scratch */
     MOTUS__T_DRY = 1 << 9       /* MOTUS_CHECKED's run that stores nothing */
 };
-/* The terms a kernel sees. A fast kernel is compiled for one `shape`: whether the state has force and
-   inverse-mass arrays (the loads it makes), no coupling, no dry run; the other terms it tests at run time
-   (a branch per group on a flag that does not change: the predictor makes it cheap), except gravity and
-   linear drag, which every kernel always computes (a = F/m + g - k*v, with g = 0 and k = 0 when off: two
-   operations cost less than a branch, and every path computes the same bits). The general kernel
-   (MOTUS__SHAPE_ANY) reads everything from the job. */
+/* The terms a kernel sees, by `shape` (a constant where the kernel is compiled):
+   - MOTUS__SHAPE_ANY, the general kernel (any stride, coupling, the dry run): every term read from the job
+     at run time, gravity and linear drag always computed as a = (F/m + g) - k*v (g = 0, k = 0 when off);
+   - MOTUS__SHAPE_ALL, the fast kernel for any scene: the same, over plain arrays, without coupling;
+   - a set of terms (gravity alone, with damping, with linear drag): a fast kernel for exactly that scene,
+     with nothing tested at run time and no work for what it lacks. These are the common scenes; they give
+     the bits the others give (g is stored as g + 0, so a = g here is (0 + g) - v*0 there, exactly).
+   Terms tested at run time cost a predictable branch per group of particles; gravity and drag computed at
+   0 cost two operations. */
 #define MOTUS__SHAPE_ANY 0x80000000u
+#define MOTUS__SHAPE_ALL 0x40000000u
+#define MOTUS__SHAPE_GRAVITY ((unsigned)MOTUS__T_GRAVITY)
+#define MOTUS__SHAPE_GRAVITY_DAMPING ((unsigned)(MOTUS__T_GRAVITY | MOTUS__T_DAMPING))
+#define MOTUS__SHAPE_GRAVITY_DRAG ((unsigned)(MOTUS__T_GRAVITY | MOTUS__T_LINEAR_DRAG))
+#define MOTUS__EXACT_SHAPE(shape) ((shape) != MOTUS__SHAPE_ANY && (shape) != MOTUS__SHAPE_ALL)
 #define MOTUS__TERMS(j, shape)                                                                                   \
-    ((shape) == MOTUS__SHAPE_ANY ? (j)->terms                                                                    \
-                                 : (((j)->terms & ~(unsigned)(MOTUS__T_FORCES | MOTUS__T_MASS | MOTUS__T_COUPLED |  \
-                                                             MOTUS__T_DRY)) | (shape)))
+    ((shape) == MOTUS__SHAPE_ANY   ? (j)->terms                                                                  \
+     : (shape) == MOTUS__SHAPE_ALL ? ((j)->terms & ~(unsigned)(MOTUS__T_COUPLED | MOTUS__T_DRY))                 \
+                                   : (shape))
 
 typedef struct motus__job {
     unsigned terms;
@@ -1388,7 +1405,12 @@ MOTUS__KI void motus__acceleration(const motus__job *j, const motus__lane *x, co
                                    int i, int n) {
     const unsigned t = MOTUS__TERMS(j, shape);
     const motus__lane zero = motus__splat(0);
-    MOTUS__EACH_D(a[d] = (base[d] + j->gravity[d]) - v[d] * j->linear_drag;);
+    if (!MOTUS__EXACT_SHAPE(shape))
+        MOTUS__EACH_D(a[d] = (base[d] + j->gravity[d]) - v[d] * j->linear_drag;);
+    else if (t & MOTUS__T_LINEAR_DRAG)
+        MOTUS__EACH_D(a[d] = j->gravity[d] - v[d] * j->linear_drag;);
+    else
+        MOTUS__EACH_D(a[d] = j->gravity[d];);
     if (t & (MOTUS__T_QUADRATIC_DRAG | MOTUS__T_ATTRACTOR)) {
         /* Copies go to the call, so that x, v and a themselves never have their address taken and stay in
            registers on the paths that do not make it. */
@@ -1557,7 +1579,7 @@ MOTUS__KI int motus__exact_linear_drag(MOTUS__METHOD_ARGS) {
     (void)n;
     (void)inverse_mass;
     MOTUS__EACH_D(
-        motus__lane a = base[d] + j->gravity[d];
+        motus__lane a = MOTUS__EXACT_SHAPE(shape) ? j->gravity[d] : base[d] + j->gravity[d];
         const motus__lane v0 = v[d];
         if (t & MOTUS__T_MASS) a = motus__select(movable, a, zero);
         v[d] = v0 * j->exact_decay + a * j->exact_c1;
@@ -1695,10 +1717,10 @@ MOTUS__KI void motus__group_finish(const motus__job *j, motus__group *g, const i
     static int motus__general_##method(const motus__job *j, int first, int end) {                                \
         return motus__kernel_##method(j, first, end, 3, 0, 1, MOTUS__SHAPE_ANY);                                 \
     }                                                                                                            \
-    MOTUS__FAST(method, 2, 0, 0) MOTUS__FAST(method, 2, 1, MOTUS__T_FORCES) MOTUS__FAST(method, 2, 2, MOTUS__T_MASS) \
-    MOTUS__FAST(method, 2, 3, MOTUS__T_FORCES | MOTUS__T_MASS)                                                   \
-    MOTUS__FAST(method, 3, 0, 0) MOTUS__FAST(method, 3, 1, MOTUS__T_FORCES) MOTUS__FAST(method, 3, 2, MOTUS__T_MASS) \
-    MOTUS__FAST(method, 3, 3, MOTUS__T_FORCES | MOTUS__T_MASS)
+    MOTUS__FAST(method, 2, 0, MOTUS__SHAPE_ALL) MOTUS__FAST(method, 2, 1, MOTUS__SHAPE_GRAVITY)                   \
+    MOTUS__FAST(method, 2, 2, MOTUS__SHAPE_GRAVITY_DAMPING) MOTUS__FAST(method, 2, 3, MOTUS__SHAPE_GRAVITY_DRAG)   \
+    MOTUS__FAST(method, 3, 0, MOTUS__SHAPE_ALL) MOTUS__FAST(method, 3, 1, MOTUS__SHAPE_GRAVITY)                   \
+    MOTUS__FAST(method, 3, 2, MOTUS__SHAPE_GRAVITY_DAMPING) MOTUS__FAST(method, 3, 3, MOTUS__SHAPE_GRAVITY_DRAG)
 #define MOTUS__FAST(method, dims, index, shape)                                                                  \
     static int motus__fast##dims##_##index##_##method(const motus__job *j, int first, int end) {                 \
         return motus__kernel_##method(j, first, end, dims, 1, 0, shape);                                         \
@@ -1739,7 +1761,10 @@ static motus__kernel_function motus__kernel_for(motus_method method, int dims, u
         MOTUS__ROW(velocity_verlet) MOTUS__ROW(leapfrog) MOTUS__ROW(midpoint) MOTUS__ROW(rk4)
         MOTUS__ROW(forest_ruth) MOTUS__ROW(exact_linear_drag)};
 #undef MOTUS__ROW
-    const int shape = ((terms & MOTUS__T_FORCES) ? 1 : 0) + ((terms & MOTUS__T_MASS) ? 2 : 0);
+    /* Drift (no term) takes the gravity kernel with g = 0: adding +0 to +0 changes nothing. */
+    const unsigned exact = terms | MOTUS__T_GRAVITY;
+    const int shape = exact == MOTUS__SHAPE_GRAVITY ? 1 : exact == MOTUS__SHAPE_GRAVITY_DAMPING ? 2
+                    : exact == MOTUS__SHAPE_GRAVITY_DRAG ? 3 : 0;
     return kernels[method][general ? 8 : (dims - 2) * 4 + shape];
 }
 
@@ -1952,7 +1977,7 @@ static void motus__job_init(motus__job *j, const motus_scene *scene, const motus
         j->x[d] = state->position[d];
         j->v[d] = state->velocity[d];
         j->f[d] = state->force[d];
-        j->gravity[d] = motus__splat(g[d]);
+        j->gravity[d] = motus__splat(g[d] + 0); /* -0 as +0: every kernel then adds the same zero */
         j->attractor[d] = motus__splat(at[d]);
         j->bounds_min[d] = motus__splat(lo[d]);
         j->bounds_max[d] = motus__splat(hi[d]);
