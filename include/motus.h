@@ -593,8 +593,11 @@ MOTUS_DEF motus_result motus__check(motus_vec3 position, motus_vec3 velocity, mo
    First order: under a constant acceleration a it lands at x0 + v0*t + a*t*(t + dt)/2 after time t. It
    keeps the energy of an orbit or a spring bounded; a spring of stiffness k is stable while dt < 2*sqrt(m/k).
    Writes *velocity and *position only if both come out finite. */
+MOTUS_DEF int motus__finite_in(motus_vec3 v, int dims) {
+    return dims == 3 ? motus_vec3_is_finite(v) : motus_real_is_finite(v.x) & motus_real_is_finite(v.y);
+}
 MOTUS_DEF motus_result motus__step(motus_vec3 *position, motus_vec3 *velocity, motus_vec3 force,
-                                   motus_real inverse_mass, motus_real dt) {
+                                   motus_real inverse_mass, motus_real dt, int dims) {
     motus_vec3 v, x;
     if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
@@ -603,12 +606,13 @@ MOTUS_DEF motus_result motus__step(motus_vec3 *position, motus_vec3 *velocity, m
        agree bit for bit, signed zeros included. */
     v.x = velocity->x + MOTUS__ROUND(((MOTUS__ROUND(force.x * inverse_mass) + 0) - MOTUS__ROUND(velocity->x * 0)) * dt);
     v.y = velocity->y + MOTUS__ROUND(((MOTUS__ROUND(force.y * inverse_mass) + 0) - MOTUS__ROUND(velocity->y * 0)) * dt);
-    v.z = velocity->z + MOTUS__ROUND(((MOTUS__ROUND(force.z * inverse_mass) + 0) - MOTUS__ROUND(velocity->z * 0)) * dt);
+    v.z = dims == 3 ? velocity->z + MOTUS__ROUND(((MOTUS__ROUND(force.z * inverse_mass) + 0) -
+                                                  MOTUS__ROUND(velocity->z * 0)) * dt) : 0;
     if (inverse_mass == 0) v = *velocity; /* immovable: forces do not change its velocity */
     x.x = position->x + MOTUS__ROUND(v.x * dt);
     x.y = position->y + MOTUS__ROUND(v.y * dt);
-    x.z = position->z + MOTUS__ROUND(v.z * dt);
-    if (!(motus_vec3_is_finite(v) & motus_vec3_is_finite(x))) {
+    x.z = dims == 3 ? position->z + MOTUS__ROUND(v.z * dt) : 0;
+    if (!(motus__finite_in(v, dims) & motus__finite_in(x, dims))) {
         motus_result state = motus__check(*position, *velocity, force, inverse_mass);
         return state != MOTUS_OK ? state : MOTUS_ERROR_OVERFLOW;
     }
@@ -620,19 +624,19 @@ MOTUS_DEF motus_result motus__step(motus_vec3 *position, motus_vec3 *velocity, m
 /* Kahan-compensated position update for far from the origin in float: the carry keeps what each update
    rounded away (Knuth's TwoSum, exact) and adds it back next step. The velocity is motus__step's. */
 MOTUS_DEF motus_result motus__step_compensated(motus_vec3 *position, motus_vec3 *velocity, motus_vec3 force,
-                                               motus_real inverse_mass, motus_vec3 *carry, motus_real dt) {
+                                               motus_real inverse_mass, motus_vec3 *carry, motus_real dt, int dims) {
     motus_vec3 x = *position, v = *velocity, delta, sum, back, error;
     motus_result result;
     if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (!motus_vec3_is_finite(*carry)) return MOTUS_ERROR_NOT_FINITE;
-    result = motus__step(&x, &v, force, inverse_mass, dt);
+    result = motus__step(&x, &v, force, inverse_mass, dt, dims);
     if (result != MOTUS_OK || dt == 0) return result;
     delta = motus_v3(MOTUS__ROUND(v.x * dt) + carry->x, MOTUS__ROUND(v.y * dt) + carry->y,
                      MOTUS__ROUND(v.z * dt) + carry->z);
     sum = motus_vec3_add(*position, delta);
     back = motus_vec3_sub(sum, *position);
     error = motus_vec3_add(motus_vec3_sub(*position, motus_vec3_sub(sum, back)), motus_vec3_sub(delta, back));
-    if (!motus_vec3_is_finite(sum)) return MOTUS_ERROR_OVERFLOW;
+    if (!motus__finite_in(sum, dims)) return MOTUS_ERROR_OVERFLOW;
     *velocity = v;
     *position = sum;
     *carry = error;
@@ -644,12 +648,12 @@ MOTUS_DEF motus_real motus__damp(motus_real v, motus_real kept) {
     v = v * kept;
     return (v < rest && v > -rest) ? v * 0 : v;
 }
-MOTUS_DEF motus_result motus__damp3(motus_vec3 *velocity, motus_real inverse_mass, motus_real kept) {
-    if (!motus_vec3_is_finite(*velocity)) return MOTUS_ERROR_NOT_FINITE;
+MOTUS_DEF motus_result motus__damp3(motus_vec3 *velocity, motus_real inverse_mass, motus_real kept, int dims) {
+    if (!motus__finite_in(*velocity, dims)) return MOTUS_ERROR_NOT_FINITE;
     if (inverse_mass == 0) return MOTUS_OK; /* immovable: damping does not act on it */
     velocity->x = motus__damp(velocity->x, kept);
     velocity->y = motus__damp(velocity->y, kept);
-    velocity->z = motus__damp(velocity->z, kept);
+    if (dims == 3) velocity->z = motus__damp(velocity->z, kept);
     return MOTUS_OK;
 }
 /* The kept factor of damping_per_second over dt: (1 - d)^dt. */
@@ -670,9 +674,10 @@ MOTUS_DEF void motus__bounce1(motus_real *x, motus_real *v, motus_real lo, motus
     if (*x < lo) *x = lo;
     if (*x > hi) *x = hi;
 }
-MOTUS_DEF motus_result motus__bounce(motus_vec3 *x, motus_vec3 *v, motus_vec3 lo, motus_vec3 hi, motus_real restitution) {
+MOTUS_DEF motus_result motus__bounce(motus_vec3 *x, motus_vec3 *v, motus_vec3 lo, motus_vec3 hi, motus_real restitution,
+                                     int dims) {
     motus_vec3 nx = *x, nv = *v;
-    if (!motus_real_is_finite(restitution) || !motus_vec3_is_finite(*x) || !motus_vec3_is_finite(*v))
+    if (!motus_real_is_finite(restitution) || !motus__finite_in(*x, dims) || !motus__finite_in(*v, dims))
         return MOTUS_ERROR_NOT_FINITE;
     if (lo.x != lo.x || lo.y != lo.y || lo.z != lo.z || hi.x != hi.x || hi.y != hi.y || hi.z != hi.z)
         return MOTUS_ERROR_NOT_FINITE; /* NaN walls; infinite ones mean no wall */
@@ -680,7 +685,7 @@ MOTUS_DEF motus_result motus__bounce(motus_vec3 *x, motus_vec3 *v, motus_vec3 lo
     if (!motus__fraction_valid(restitution)) return MOTUS_ERROR_INVALID_RESTITUTION;
     motus__bounce1(&nx.x, &nv.x, lo.x, hi.x, -restitution);
     motus__bounce1(&nx.y, &nv.y, lo.y, hi.y, -restitution);
-    motus__bounce1(&nx.z, &nv.z, lo.z, hi.z, -restitution);
+    if (dims == 3) motus__bounce1(&nx.z, &nv.z, lo.z, hi.z, -restitution);
     *x = nx;
     *v = nv;
     return MOTUS_OK;
@@ -741,7 +746,7 @@ MOTUS_DEF motus_result motus_particle_step(motus_particle *particle, motus_real 
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     x = motus__v3_of(particle->position);
     v = motus__v3_of(particle->velocity);
-    result = motus__step(&x, &v, motus__v3_of(particle->force), particle->inverse_mass, dt);
+    result = motus__step(&x, &v, motus__v3_of(particle->force), particle->inverse_mass, dt, 2);
     if (result == MOTUS_OK && dt != 0) {
         particle->position = motus__v2_of(x);
         particle->velocity = motus__v2_of(v);
@@ -757,7 +762,7 @@ MOTUS_DEF motus_result motus_particle_step_compensated(motus_particle *particle,
     x = motus__v3_of(particle->position);
     v = motus__v3_of(particle->velocity);
     c = motus__v3_of(*carry);
-    result = motus__step_compensated(&x, &v, motus__v3_of(particle->force), particle->inverse_mass, &c, dt);
+    result = motus__step_compensated(&x, &v, motus__v3_of(particle->force), particle->inverse_mass, &c, dt, 2);
     if (result == MOTUS_OK && dt != 0) {
         particle->position = motus__v2_of(x);
         particle->velocity = motus__v2_of(v);
@@ -773,7 +778,7 @@ MOTUS_DEF motus_result motus_particle_damp_per_step(motus_particle *particle, mo
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     if (!motus__fraction_valid(damping)) return MOTUS_ERROR_INVALID_DAMPING;
     v = motus__v3_of(particle->velocity);
-    result = motus__damp3(&v, particle->inverse_mass, MOTUS_R(1.0) - damping);
+    result = motus__damp3(&v, particle->inverse_mass, MOTUS_R(1.0) - damping, 2);
     if (result == MOTUS_OK) particle->velocity = motus__v2_of(v);
     return result;
 }
@@ -787,7 +792,7 @@ MOTUS_DEF motus_result motus_particle_damp_per_second(motus_particle *particle, 
     if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (!motus__fraction_valid(damping_per_second)) return MOTUS_ERROR_INVALID_DAMPING;
     v = motus__v3_of(particle->velocity);
-    result = motus__damp3(&v, particle->inverse_mass, motus__kept_per_second(damping_per_second, dt));
+    result = motus__damp3(&v, particle->inverse_mass, motus__kept_per_second(damping_per_second, dt), 2);
     if (result == MOTUS_OK) particle->velocity = motus__v2_of(v);
     return result;
 }
@@ -799,7 +804,7 @@ MOTUS_DEF motus_result motus_particle_bounce(motus_particle *particle, motus_vec
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     x = motus__v3_of(particle->position);
     v = motus__v3_of(particle->velocity);
-    result = motus__bounce(&x, &v, motus__v3_of(bounds_min), motus__v3_of(bounds_max), restitution);
+    result = motus__bounce(&x, &v, motus__v3_of(bounds_min), motus__v3_of(bounds_max), restitution, 2);
     if (result == MOTUS_OK) {
         particle->position = motus__v2_of(x);
         particle->velocity = motus__v2_of(v);
@@ -851,29 +856,29 @@ MOTUS_DEF motus_result motus_particle3_clear_forces(motus_particle3 *particle) {
 }
 MOTUS_DEF motus_result motus_particle3_step(motus_particle3 *particle, motus_real dt) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    return motus__step(&particle->position, &particle->velocity, particle->force, particle->inverse_mass, dt);
+    return motus__step(&particle->position, &particle->velocity, particle->force, particle->inverse_mass, dt, 3);
 }
 MOTUS_DEF motus_result motus_particle3_step_compensated(motus_particle3 *particle, motus_vec3 *carry, motus_real dt) {
     if (!particle || !carry) return MOTUS_ERROR_NULL_POINTER;
     return motus__step_compensated(&particle->position, &particle->velocity, particle->force, particle->inverse_mass,
-                                   carry, dt);
+                                   carry, dt, 3);
 }
 MOTUS_DEF motus_result motus_particle3_damp_per_step(motus_particle3 *particle, motus_real damping) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     if (!motus__fraction_valid(damping)) return MOTUS_ERROR_INVALID_DAMPING;
-    return motus__damp3(&particle->velocity, particle->inverse_mass, MOTUS_R(1.0) - damping);
+    return motus__damp3(&particle->velocity, particle->inverse_mass, MOTUS_R(1.0) - damping, 3);
 }
 MOTUS_DEF motus_result motus_particle3_damp_per_second(motus_particle3 *particle, motus_real damping_per_second,
                                                        motus_real dt) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (!motus__fraction_valid(damping_per_second)) return MOTUS_ERROR_INVALID_DAMPING;
-    return motus__damp3(&particle->velocity, particle->inverse_mass, motus__kept_per_second(damping_per_second, dt));
+    return motus__damp3(&particle->velocity, particle->inverse_mass, motus__kept_per_second(damping_per_second, dt), 3);
 }
 MOTUS_DEF motus_result motus_particle3_bounce(motus_particle3 *particle, motus_vec3 bounds_min, motus_vec3 bounds_max,
                                               motus_real restitution) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    return motus__bounce(&particle->position, &particle->velocity, bounds_min, bounds_max, restitution);
+    return motus__bounce(&particle->position, &particle->velocity, bounds_min, bounds_max, restitution, 3);
 }
 
 /* The damping per second that a per-step damping amounts to at a fixed rate: 1 - (1 - d)^rate. The
