@@ -563,6 +563,7 @@ MOTUS_DEF motus__bits motus__real_bits(motus_real x) {
 MOTUS_DEF int motus_real_is_finite(motus_real x) {
     return (motus__real_bits(x) & MOTUS__EXPONENT_MASK) != MOTUS__EXPONENT_MASK;
 }
+MOTUS_DEF motus__bits motus__sign_bit(void) { return (motus__bits)~(MOTUS__EXPONENT_MASK | (MOTUS__EXPONENT_MASK >> 1)) & (motus__bits)(MOTUS__EXPONENT_MASK << 1); }
 MOTUS_DEF int motus_vec2_is_finite(motus_vec2 v) { return motus_real_is_finite(v.x) & motus_real_is_finite(v.y); }
 MOTUS_DEF int motus_vec3_is_finite(motus_vec3 v) {
     return motus_real_is_finite(v.x) & motus_real_is_finite(v.y) & motus_real_is_finite(v.z);
@@ -612,7 +613,8 @@ MOTUS_DEF motus_result motus__step(motus_vec3 *position, motus_vec3 *velocity, m
     x.x = position->x + MOTUS__ROUND(v.x * dt);
     x.y = position->y + MOTUS__ROUND(v.y * dt);
     x.z = dims == 3 ? position->z + MOTUS__ROUND(v.z * dt) : 0;
-    if (!(motus__finite_in(v, dims) & motus__finite_in(x, dims))) {
+    /* x = position + v*dt is NaN or Inf whenever v is (v*0 is NaN for an infinite v), so x alone tells. */
+    if (!motus__finite_in(x, dims)) {
         motus_result state = motus__check(*position, *velocity, force, inverse_mass);
         return state != MOTUS_OK ? state : MOTUS_ERROR_OVERFLOW;
     }
@@ -644,9 +646,10 @@ MOTUS_DEF motus_result motus__step_compensated(motus_vec3 *position, motus_vec3 
 }
 /* v*kept, each component below MOTUS_REST_SPEED set to a zero of its sign (subnormals are slow). */
 MOTUS_DEF motus_real motus__damp(motus_real v, motus_real kept) {
-    const motus_real rest = (motus_real)(MOTUS_REST_SPEED);
+    const motus__bits rest = motus__real_bits((motus_real)(MOTUS_REST_SPEED));
     v = v * kept;
-    return (v < rest && v > -rest) ? v * 0 : v;
+    /* |v| < rest compared as magnitude bits (monotonic for non-negative reals): no branch */
+    return v * (motus_real)((motus__real_bits(v) & ~motus__sign_bit()) >= rest);
 }
 MOTUS_DEF motus_result motus__damp3(motus_vec3 *velocity, motus_real inverse_mass, motus_real kept, int dims) {
     if (!motus__finite_in(*velocity, dims)) return MOTUS_ERROR_NOT_FINITE;
@@ -728,9 +731,11 @@ MOTUS_DEF motus_result motus_particle_check(const motus_particle *particle) {
 MOTUS_DEF motus_result motus_particle_add_force(motus_particle *particle, motus_vec2 force) {
     motus_vec2 sum;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    if (!(motus_vec2_is_finite(force) & motus_vec2_is_finite(particle->force))) return MOTUS_ERROR_NOT_FINITE;
+    /* A NaN or Inf among the terms makes the sum so: one test, and the cause only on failure. */
     sum = motus_vec2_add(particle->force, force);
-    if (!motus_vec2_is_finite(sum)) return MOTUS_ERROR_OVERFLOW;
+    if (!motus_vec2_is_finite(sum))
+        return (motus_vec2_is_finite(force) & motus_vec2_is_finite(particle->force)) ? MOTUS_ERROR_OVERFLOW
+                                                                                      : MOTUS_ERROR_NOT_FINITE;
     particle->force = sum;
     return MOTUS_OK;
 }
@@ -843,9 +848,10 @@ MOTUS_DEF motus_result motus_particle3_check(const motus_particle3 *particle) {
 MOTUS_DEF motus_result motus_particle3_add_force(motus_particle3 *particle, motus_vec3 force) {
     motus_vec3 sum;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    if (!(motus_vec3_is_finite(force) & motus_vec3_is_finite(particle->force))) return MOTUS_ERROR_NOT_FINITE;
     sum = motus_vec3_add(particle->force, force);
-    if (!motus_vec3_is_finite(sum)) return MOTUS_ERROR_OVERFLOW;
+    if (!motus_vec3_is_finite(sum))
+        return (motus_vec3_is_finite(force) & motus_vec3_is_finite(particle->force)) ? MOTUS_ERROR_OVERFLOW
+                                                                                      : MOTUS_ERROR_NOT_FINITE;
     particle->force = sum;
     return MOTUS_OK;
 }
