@@ -98,7 +98,9 @@
 #include <string.h> /* memcpy (the bit-level check in C++) */
 
 /* >>config ====================================================================================== */
-#ifdef MOTUS_STATIC
+#if defined(MOTUS_STATIC) && (defined(__GNUC__) || defined(__clang__))
+#define MOTUS__API_DEFAULT static __attribute__((unused)) /* a one-file program calls only some */
+#elif defined(MOTUS_STATIC)
 #define MOTUS__API_DEFAULT static
 #else
 #define MOTUS__API_DEFAULT extern
@@ -2147,6 +2149,19 @@ static motus_result motus__step_checks(const motus_scene *scene, const motus_sta
     return motus_scene_check(scene, *dims, state->count, NULL);
 }
 
+/* The kernels sum what they write: a sum that is not finite means a value that is not, or finite values
+   whose sum overflowed (results near the largest real). Only then are the values looked at, one by one. */
+static int motus__written_broken(const motus_state *state, int dims, int first, int end) {
+    const ptrdiff_t stride = state->stride == 0 ? 1 : state->stride;
+    int i, d;
+    for (i = first; i < end; ++i)
+        for (d = 0; d < dims; ++d)
+            if (!motus_real_is_finite(state->position[d][(ptrdiff_t)i * stride]) ||
+                !motus_real_is_finite(state->velocity[d][(ptrdiff_t)i * stride]))
+                return 1;
+    return 0;
+}
+
 /* Runs the kernel over [first, end), after the checked build's look at the data. */
 static motus_result motus__run(motus__job *j, const motus_scene *scene, const motus_state *state, int dims, int first,
                                int end) {
@@ -2158,10 +2173,8 @@ static motus_result motus__run(motus__job *j, const motus_scene *scene, const mo
     j->terms |= MOTUS__T_DRY;
     if (motus__kernel_for(scene->method, dims, 0, 1)(j, first, end)) return MOTUS_ERROR_OVERFLOW;
     j->terms &= ~(unsigned)MOTUS__T_DRY;
-#else
-    (void)state;
 #endif
-    return kernel(j, first, end) ? MOTUS_ERROR_NOT_FINITE : MOTUS_OK;
+    return kernel(j, first, end) && motus__written_broken(state, dims, first, end) ? MOTUS_ERROR_NOT_FINITE : MOTUS_OK;
 }
 
 MOTUS_API motus_result motus_step_range(const motus_scene *scene, const motus_state *state, int first, int count,
@@ -2220,7 +2233,8 @@ MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *s
         }
         job.record_stage = -1;
         job.apply_damping = substep == substeps - 1;
-        if (motus__kernel_for(scene->method, dims, 0, 1)(&job, 0, count)) return MOTUS_ERROR_NOT_FINITE;
+        if (motus__kernel_for(scene->method, dims, 0, 1)(&job, 0, count) && motus__written_broken(state, dims, 0, count))
+            return MOTUS_ERROR_NOT_FINITE;
     }
     return MOTUS_OK;
 }
