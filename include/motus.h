@@ -604,6 +604,7 @@ MOTUS_DEF motus_result motus__step(motus_vec3 *position, motus_vec3 *velocity, m
     motus_vec3 v, x;
     if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
+    if (dt == 0) return MOTUS_OK; /* a step of nothing, as motus_step's: the state stays bit for bit */
     /* a = (F*(1/m) + g) - k*v with g = 0 and k = 0, as the engine computes it for a scene without gravity
        and drag (adding a zero and subtracting a v*0 change nothing but the sign of a zero), so that the two
        agree bit for bit, signed zeros included. */
@@ -615,12 +616,12 @@ MOTUS_DEF motus_result motus__step(motus_vec3 *position, motus_vec3 *velocity, m
     x.x = position->x + MOTUS__ROUND(v.x * dt);
     x.y = position->y + MOTUS__ROUND(v.y * dt);
     x.z = dims == 3 ? position->z + MOTUS__ROUND(v.z * dt) : 0;
-    /* x = position + v*dt is NaN or Inf whenever v is (v*0 is NaN for an infinite v), so x alone tells. */
-    if (!motus__finite_in(x, dims)) {
+    /* x = position + v*dt is NaN or Inf whenever v is, so x tells for the state; the force is looked at
+       too, since an immovable particle does not read it (its NaN must still be reported, as the engine's). */
+    if (!(motus__finite_in(x, dims) & motus__finite_in(force, dims))) {
         motus_result state = motus__check(*position, *velocity, force, inverse_mass);
         return state != MOTUS_OK ? state : MOTUS_ERROR_OVERFLOW;
     }
-    if (dt == 0) return MOTUS_OK; /* a step of nothing: the state stays bit for bit (-0 included) */
     *velocity = v;
     *position = x;
     return MOTUS_OK;
@@ -655,7 +656,8 @@ MOTUS_DEF motus_real motus__damp(motus_real v, motus_real kept) {
 }
 MOTUS_DEF motus_result motus__damp3(motus_vec3 *velocity, motus_real inverse_mass, motus_real kept, int dims) {
     if (!motus__finite_in(*velocity, dims)) return MOTUS_ERROR_NOT_FINITE;
-    if (inverse_mass == 0) return MOTUS_OK; /* immovable: damping does not act on it */
+    /* immovable: damping does not act on it; no damping (0, or dt 0): no change, not even the flush */
+    if (inverse_mass == 0 || kept == 1) return MOTUS_OK;
     velocity->x = motus__damp(velocity->x, kept);
     velocity->y = motus__damp(velocity->y, kept);
     if (dims == 3) velocity->z = motus__damp(velocity->z, kept);
@@ -671,10 +673,12 @@ MOTUS_DEF void motus__bounce1(motus_real *x, motus_real *v, motus_real lo, motus
     if (*x < lo) {
         *x = lo + (lo - *x);
         *v = *v * bounce;
+        if (!(*x <= MOTUS__REAL_MAX)) *x = lo; /* the mirror overflowed (a wall near the largest real) */
     }
     if (*x > hi) {
         *x = hi - (*x - hi);
         *v = *v * bounce;
+        if (!(*x >= -MOTUS__REAL_MAX)) *x = hi;
     }
     if (*x < lo) *x = lo;
     if (*x > hi) *x = hi;
@@ -686,7 +690,10 @@ MOTUS_DEF motus_result motus__bounce(motus_vec3 *x, motus_vec3 *v, motus_vec3 lo
         return MOTUS_ERROR_NOT_FINITE;
     if (lo.x != lo.x || lo.y != lo.y || lo.z != lo.z || hi.x != hi.x || hi.y != hi.y || hi.z != hi.z)
         return MOTUS_ERROR_NOT_FINITE; /* NaN walls; infinite ones mean no wall */
-    if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z)) return MOTUS_ERROR_INVALID_BOUNDS;
+    /* min <= max, and a wall at infinity only where it means "no wall": min may be -Inf, max +Inf */
+    if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z) || lo.x > MOTUS__REAL_MAX || lo.y > MOTUS__REAL_MAX ||
+        lo.z > MOTUS__REAL_MAX || hi.x < -MOTUS__REAL_MAX || hi.y < -MOTUS__REAL_MAX || hi.z < -MOTUS__REAL_MAX)
+        return MOTUS_ERROR_INVALID_BOUNDS;
     if (!motus__fraction_valid(restitution)) return MOTUS_ERROR_INVALID_RESTITUTION;
     motus__bounce1(&nx.x, &nv.x, lo.x, hi.x, -restitution);
     motus__bounce1(&nx.y, &nv.y, lo.y, hi.y, -restitution);
@@ -989,10 +996,12 @@ MOTUS_DEF motus_result motus_max_stable_dt(motus_method method, motus_real stiff
         *max_dt = (motus_real)HUGE_VAL;
         return MOTUS_OK;
     }
-    /* sqrt(m/k) without an intermediate overflow: stiffness 1e-30 on mass 1e30 is a finite 1e30. */
-    *max_dt = motus__stable_dt(method, stiffness / mass, 0);
-    if (*max_dt == 0 && motus_method_stability_limit(method) > 0)
-        *max_dt = motus_method_stability_limit(method) * MOTUS_SQRT(mass) / MOTUS_SQRT(stiffness);
+    /* limit*sqrt(m)/sqrt(k): k/m itself may underflow or overflow where the answer does not (stiffness
+       1e-30 N/m on 1e30 kg is a finite 2e30 s for semi-implicit Euler). */
+    {
+        const motus_real limit = motus_method_stability_limit(method);
+        *max_dt = !motus_real_is_finite(limit) ? limit : limit * (MOTUS_SQRT(mass) / MOTUS_SQRT(stiffness));
+    }
     return MOTUS_OK;
 }
 /* The fewest equal substeps n with dt/n < safety*max_stable_dt (as computed in motus_real). safety in
@@ -1195,7 +1204,16 @@ extern "C" {
 #define MOTUS_SIMD_BYTES 16
 #endif
 #endif
-#if (defined(__GNUC__) || defined(__clang__)) && !defined(MOTUS_NO_SIMD) && MOTUS_SIMD_BYTES > 0
+/* GCC 12 stops with an internal compiler error on some selects of double lanes when the target lacks
+   SSE4.1's 64-bit compares (plain x86-64): there double steps one particle at a time (the same bits). */
+#if defined(MOTUS_DOUBLE) && defined(__GNUC__) && !defined(__clang__) && defined(__SSE2__) && !defined(__SSE4_1__) && \
+    !defined(MOTUS_NO_SIMD)
+#define MOTUS__DOUBLE_LANES_UNSAFE 1
+#else
+#define MOTUS__DOUBLE_LANES_UNSAFE 0
+#endif
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(MOTUS_NO_SIMD) && MOTUS_SIMD_BYTES > 0 && \
+    !MOTUS__DOUBLE_LANES_UNSAFE
 #define MOTUS__VECTOR 1
 #ifdef MOTUS_DOUBLE
 typedef int64_t motus__mask __attribute__((vector_size(MOTUS_SIMD_BYTES)));
@@ -1246,7 +1264,7 @@ MOTUS__KI motus__lane motus__splat(motus_real value) {
    sit). */
 MOTUS__KI motus__lane motus__load(const motus_real *from, ptrdiff_t stride, int n) {
 #if MOTUS__VECTOR
-    motus__lane lanes;
+    motus__lane lanes = motus__splat(0);
     int l;
     if (stride == 1 && n == MOTUS__LANES) return *(const motus__lane_unaligned *)from;
     for (l = 0; l < MOTUS__LANES; ++l) lanes[l] = from[(l < n ? l : n - 1) * stride];
@@ -1294,6 +1312,14 @@ MOTUS__KI motus__lane motus__select(motus__mask mask, motus__lane a, motus__lane
     return result;
 #else
     return mask ? a : b;
+#endif
+}
+/* A lane mask as reals: -1 (vectors) or 1 (scalars) where set, 0 where not. */
+MOTUS__KI motus__lane motus__mask_as_lane(motus__mask mask) {
+#if MOTUS__VECTOR
+    return __builtin_convertvector(mask, motus__lane);
+#else
+    return (motus_real)mask;
 #endif
 }
 MOTUS__KI motus_real motus__lane_sum(motus__lane x) {
@@ -1358,7 +1384,7 @@ typedef struct motus__job {
     const motus_real *f[3], *inverse_mass;
     /* scene terms */
     motus__lane gravity[3], linear_drag, quadratic_drag, attractor[3], attractor_strength, uniform_inverse_mass;
-    motus__lane kept, rest_speed, bounds_min[3], bounds_max[3], bounce;
+    motus__lane kept, rest_speed, bounds_min[3], bounds_max[3], bounce, largest;
     /* step constants: h and the fractions of it the methods use */
     motus__lane h, half_h, half_h2, sixth_h, fr_drift_out, fr_kick_out, fr_drift_in, fr_kick_in;
     motus__lane exact_decay, exact_c1, exact_c2;
@@ -1622,10 +1648,14 @@ MOTUS__KI void motus__walls(const motus__job *j, motus__lane *x, motus__lane *v,
         const motus__mask finite = (motus__mask)(x[d] >= motus__splat(-MOTUS__REAL_MAX)) &
                                    (motus__mask)(x[d] <= motus__splat(MOTUS__REAL_MAX));
         motus__mask below = x[d] < j->bounds_min[d], above;
-        x[d] = motus__select(below, j->bounds_min[d] + (j->bounds_min[d] - x[d]), x[d]);
+        motus__lane mirrored = j->bounds_min[d] + (j->bounds_min[d] - x[d]);
+        mirrored = motus__select(mirrored <= j->largest, mirrored, j->bounds_min[d]); /* the mirror overflowed */
+        x[d] = motus__select(below, mirrored, x[d]);
         v[d] = motus__select(below, v[d] * j->bounce, v[d]);
         above = x[d] > j->bounds_max[d];
-        x[d] = motus__select(above, j->bounds_max[d] - (x[d] - j->bounds_max[d]), x[d]);
+        mirrored = j->bounds_max[d] - (x[d] - j->bounds_max[d]);
+        mirrored = motus__select(mirrored >= -j->largest, mirrored, j->bounds_max[d]);
+        x[d] = motus__select(above, mirrored, x[d]);
         v[d] = motus__select(above, v[d] * j->bounce, v[d]);
         x[d] = motus__select((x[d] < j->bounds_min[d]) & finite, j->bounds_min[d], x[d]);
         x[d] = motus__select((x[d] > j->bounds_max[d]) & finite, j->bounds_max[d], x[d]);
@@ -1642,7 +1672,7 @@ static MOTUS__NOINLINE void motus__walls_3(const motus__job *j, motus__lane *x, 
    z is 0 in, discarded out, and every x and y operation is the one a 2D kernel does (adding a +0 square to
    a sum of squares, or a 0 to a max of magnitudes, changes no bit), so the two agree bit for bit. */
 typedef struct motus__group {
-    motus__lane x[3], v[3], base[3], v_start[3], inverse_mass;
+    motus__lane x[3], v[3], base[3], force[3], v_start[3], inverse_mass;
     motus__mask movable;
     ptrdiff_t stride, at;
     int n;
@@ -1661,8 +1691,19 @@ MOTUS__KI void motus__group_load(const motus__job *j, motus__group *g, int i, in
         const int axis = MOTUS__AXIS(d);
         g->x[d] = axis ? motus__load(j->x[d] + g->at, g->stride, n) : zero;
         g->v[d] = axis ? motus__load(j->v[d] + g->at, g->stride, n) : zero;
-        g->base[d] = (axis && (t & MOTUS__T_FORCES)) ? motus__load(j->f[d] + g->at, g->stride, n) * g->inverse_mass : zero;
+        g->force[d] = (axis && (t & MOTUS__T_FORCES)) ? motus__load(j->f[d] + g->at, g->stride, n) : zero;
+        g->base[d] = g->force[d] * g->inverse_mass;
     );
+}
+/* The inputs the step may not show in its results: a NaN or Inf force on an immovable particle (its
+   acceleration is 0 whatever the force), an inverse mass that is NaN, or negative. */
+MOTUS__KI void motus__group_check_inputs(const motus__job *j, const motus__group *g, motus__lane *check,
+                                         const int dims, const unsigned shape) {
+    const unsigned t = MOTUS__TERMS(j, shape);
+    motus__lane bad = motus__splat(0);
+    if (t & MOTUS__T_MASS) bad = g->inverse_mass - g->inverse_mass; /* NaN for a NaN or infinite one */
+    if (t & MOTUS__T_FORCES) MOTUS__EACH_D(bad = bad + (g->force[d] - g->force[d]););
+    if (t & (MOTUS__T_MASS | MOTUS__T_FORCES)) check[0] = check[0] + bad;
 }
 /* After a substep's method: immovable velocities back as they were, the check sum, the walls. The check is
    made before the walls, whose clamp would turn an infinite position into the wall. */
@@ -1724,7 +1765,7 @@ MOTUS__KI void motus__group_finish(const motus__job *j, motus__group *g, const i
         for (i = first; i < end_here; i += MOTUS__LANES) {                                                       \
             const int n = contiguous ? MOTUS__LANES : (end - i < MOTUS__LANES ? end - i : MOTUS__LANES);         \
             motus__group_load(j, &g, i, n, dims, contiguous, shape);                                             \
-            if (MOTUS__TERMS(j, shape) & MOTUS__T_MASS) check[0] = check[0] + (g.inverse_mass - g.inverse_mass);  \
+            motus__group_check_inputs(j, &g, check, dims, shape);                                                \
             for (s = 0; s < j->substeps; ++s) {                                                                  \
                 MOTUS__EACH_D(g.v_start[d] = g.v[d];);                                                           \
                 if (motus__##method(j, g.x, g.v, g.base, g.inverse_mass, g.movable, dims, coupled, shape, i, n)) \
@@ -1873,7 +1914,9 @@ MOTUS_API motus_result motus_scene_check(const motus_scene *scene, int dimension
     for (d = 0; d < dims; ++d) {
         if (lo[d] != lo[d]) return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, lo_names[d], -1);
         if (hi[d] != hi[d]) return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, hi_names[d], -1);
-        if (!(lo[d] <= hi[d])) return motus__scene_fail(report, MOTUS_ERROR_INVALID_BOUNDS, lo_names[d], -1);
+        if (!(lo[d] <= hi[d]) || lo[d] > MOTUS__REAL_MAX)
+            return motus__scene_fail(report, MOTUS_ERROR_INVALID_BOUNDS, lo_names[d], -1);
+        if (hi[d] < -MOTUS__REAL_MAX) return motus__scene_fail(report, MOTUS_ERROR_INVALID_BOUNDS, hi_names[d], -1);
     }
     if (!motus_real_is_finite(scene->restitution))
         return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.restitution", -1);
@@ -1984,8 +2027,13 @@ MOTUS_API size_t motus_scratch_size(const motus_scene *scene, const motus_state 
     if (!scene || !state || (unsigned)scene->method >= MOTUS_METHOD_COUNT || state->count < 0) return 0;
     if (!motus__coupled(scene)) return 0;
     dims = state->dimensions == 3 ? 3 : 2;
-    /* stage positions and velocities, and each evaluation's coupled forces */
+    /* stage positions and velocities, and each evaluation's coupled forces; checked builds also step a copy
+       of the state (positions, velocities, forces, inverse masses) so that an overflow in any substep can
+       leave the state as it was */
     per_particle = (size_t)dims * (size_t)(2 + motus_method_evaluations(scene->method)) * sizeof(motus_real);
+#ifdef MOTUS_CHECKED
+    per_particle += (size_t)(3 * dims + 1) * sizeof(motus_real);
+#endif
     if ((size_t)state->count > ((size_t)-1) / per_particle) return (size_t)-1;
     return per_particle * (size_t)state->count;
 }
@@ -2042,6 +2090,7 @@ static void motus__job_init(motus__job *j, const motus_scene *scene, const motus
     j->kept = motus__splat(kept);
     j->rest_speed = motus__splat((motus_real)(MOTUS_REST_SPEED));
     j->bounce = motus__splat(-scene->restitution);
+    j->largest = motus__splat(MOTUS__REAL_MAX);
     j->h = motus__splat(h);
     j->substep_dt = h;
     j->half_h = motus__splat(h * MOTUS_R(0.5));
@@ -2179,15 +2228,19 @@ static motus_result motus__step_checks(const motus_scene *scene, const motus_sta
 
 /* The kernels sum what they write: a sum that is not finite means a value that is not, or finite values
    whose sum overflowed (results near the largest real). Only then are the values looked at, one by one. */
-static int motus__written_broken(const motus_state *state, int dims, int first, int end) {
+static motus_result motus__written_broken(const motus_state *state, int dims, int first, int end) {
     const ptrdiff_t stride = state->stride == 0 ? 1 : state->stride;
     int i, d;
-    for (i = first; i < end; ++i)
+    for (i = first; i < end; ++i) {
+        const ptrdiff_t at = (ptrdiff_t)i * stride;
         for (d = 0; d < dims; ++d)
-            if (!motus_real_is_finite(state->position[d][(ptrdiff_t)i * stride]) ||
-                !motus_real_is_finite(state->velocity[d][(ptrdiff_t)i * stride]))
-                return 1;
-    return 0;
+            if (!motus_real_is_finite(state->position[d][at]) || !motus_real_is_finite(state->velocity[d][at]) ||
+                (state->force[d] && !motus_real_is_finite(state->force[d][at])))
+                return MOTUS_ERROR_NOT_FINITE;
+        if (state->inverse_mass && !motus_real_is_finite(state->inverse_mass[at])) return MOTUS_ERROR_NOT_FINITE;
+        if (state->inverse_mass && state->inverse_mass[at] < 0) return MOTUS_ERROR_INVALID_MASS;
+    }
+    return MOTUS_OK;
 }
 
 /* Runs the kernel over [first, end), after the checked build's look at the data. */
@@ -2202,7 +2255,7 @@ static motus_result motus__run(motus__job *j, const motus_scene *scene, const mo
     if (motus__kernel_for(scene->method, dims, 0, 1)(j, first, end)) return MOTUS_ERROR_OVERFLOW;
     j->terms &= ~(unsigned)MOTUS__T_DRY;
 #endif
-    return kernel(j, first, end) && motus__written_broken(state, dims, first, end) ? MOTUS_ERROR_NOT_FINITE : MOTUS_OK;
+    return kernel(j, first, end) ? motus__written_broken(state, dims, first, end) : MOTUS_OK;
 }
 
 MOTUS_API motus_result motus_step_range(const motus_scene *scene, const motus_state *state, int first, int count,
@@ -2219,12 +2272,49 @@ MOTUS_API motus_result motus_step_range(const motus_scene *scene, const motus_st
     return motus__run(&job, scene, state, dims, first, first + count);
 }
 
+/* The substeps of a coupled scene: for each, a recording pass per stage (the stage state into scratch,
+   then the callback and the springs add that stage's forces), then the pass that stores. */
+static motus_result motus__step_coupled(const motus_scene *scene, const motus_state *state, int dims, motus_real dt,
+                                        motus_real *memory, int evaluations) {
+    const motus__kernel_function kernel = motus__kernel_for(scene->method, dims, 0, 1);
+    const int count = state->count;
+    motus__job job;
+    int d, stage, substep, substeps;
+    motus__job_init(&job, scene, state, dims, dt);
+    for (d = 0; d < dims; ++d) {
+        job.stage_x[d] = memory + (size_t)d * (size_t)count;
+        job.stage_v[d] = memory + (size_t)(dims + d) * (size_t)count;
+        for (stage = 0; stage < evaluations; ++stage)
+            job.stage_force[stage][d] = memory + (size_t)((2 + stage) * dims + d) * (size_t)count;
+    }
+    substeps = job.substeps;
+    job.substeps = 1;
+    for (substep = 0; substep < substeps; ++substep) {
+        const motus_real h = job.substep_dt;
+        for (stage = 0; stage < evaluations; ++stage) {
+            job.record_stage = stage;
+            (void)kernel(&job, 0, count);
+            motus__stage_forces(&job, scene, dims, count, stage, motus__stage_time(scene->method, stage) * h);
+        }
+        job.record_stage = -1;
+        job.apply_damping = substep == substeps - 1;
+        if (kernel(&job, 0, count)) {
+            const motus_result result = motus__written_broken(state, dims, 0, count);
+            if (result != MOTUS_OK) return result;
+        }
+    }
+    return MOTUS_OK;
+}
+
 MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *state, motus_real dt, void *scratch,
                                   size_t scratch_bytes) {
     motus__job job;
     motus_result result;
     motus_real *memory = (motus_real *)scratch;
-    int dims = 2, d, stage, substep, substeps, evaluations, count;
+    int dims = 2, evaluations, count;
+#ifdef MOTUS_CHECKED
+    int d;
+#endif
     result = motus__step_checks(scene, state, dt, &dims);
     if (result != MOTUS_OK) return result;
     count = state->count;
@@ -2238,33 +2328,44 @@ MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *s
         (uintptr_t)scratch % offsetof(motus__align_probe, r) != 0)
         return MOTUS_ERROR_SCRATCH_TOO_SMALL;
     if (count == 0 || dt == 0) return MOTUS_OK;
-    motus__job_init(&job, scene, state, dims, dt);
-#ifdef MOTUS_CHECKED
-    result = motus_state_check(scene, state, 0, count, NULL);
-    if (result != MOTUS_OK) return result;
-#endif
     evaluations = motus_method_evaluations(scene->method);
-    for (d = 0; d < dims; ++d) {
-        job.stage_x[d] = memory + (size_t)d * (size_t)count;
-        job.stage_v[d] = memory + (size_t)(dims + d) * (size_t)count;
-        for (stage = 0; stage < evaluations; ++stage)
-            job.stage_force[stage][d] = memory + (size_t)((2 + stage) * dims + d) * (size_t)count;
-    }
-    substeps = job.substeps;
-    job.substeps = 1;
-    for (substep = 0; substep < substeps; ++substep) {
-        const motus_real h = job.substep_dt;
-        for (stage = 0; stage < evaluations; ++stage) {
-            job.record_stage = stage;
-            (void)motus__kernel_for(scene->method, dims, 0, 1)(&job, 0, count);
-            motus__stage_forces(&job, scene, dims, count, stage, motus__stage_time(scene->method, stage) * h);
+#ifdef MOTUS_CHECKED
+    {
+        /* Checked: the data first, then every substep on a copy in scratch, written back only if it all
+           came out finite, so that an overflow leaves the state as it was. */
+        motus_state copy = *state;
+        const ptrdiff_t stride = state->stride == 0 ? 1 : state->stride;
+        motus_real *next = memory + (size_t)(2 + evaluations) * (size_t)dims * (size_t)count;
+        int i;
+        result = motus_state_check(scene, state, 0, count, NULL);
+        if (result != MOTUS_OK) return result;
+        copy.stride = 1;
+        for (d = 0; d < dims; ++d) {
+            copy.position[d] = next, next += count;
+            copy.velocity[d] = next, next += count;
+            copy.force[d] = state->force[d] ? next : NULL, next += count;
+            for (i = 0; i < count; ++i) {
+                copy.position[d][i] = state->position[d][(ptrdiff_t)i * stride];
+                copy.velocity[d][i] = state->velocity[d][(ptrdiff_t)i * stride];
+                if (state->force[d]) next[i - count] = state->force[d][(ptrdiff_t)i * stride];
+            }
         }
-        job.record_stage = -1;
-        job.apply_damping = substep == substeps - 1;
-        if (motus__kernel_for(scene->method, dims, 0, 1)(&job, 0, count) && motus__written_broken(state, dims, 0, count))
-            return MOTUS_ERROR_NOT_FINITE;
+        if (state->inverse_mass) {
+            for (i = 0; i < count; ++i) next[i] = state->inverse_mass[(ptrdiff_t)i * stride];
+            copy.inverse_mass = next;
+        }
+        result = motus__step_coupled(scene, &copy, dims, dt, memory, evaluations);
+        if (result != MOTUS_OK) return MOTUS_ERROR_OVERFLOW; /* the data was checked: only an overflow is left */
+        for (d = 0; d < dims; ++d)
+            for (i = 0; i < count; ++i) {
+                state->position[d][(ptrdiff_t)i * stride] = copy.position[d][i];
+                state->velocity[d][(ptrdiff_t)i * stride] = copy.velocity[d][i];
+            }
+        return MOTUS_OK;
     }
-    return MOTUS_OK;
+#else
+    return motus__step_coupled(scene, state, dims, dt, memory, evaluations);
+#endif
 }
 
 MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const motus_state *state,
