@@ -900,7 +900,7 @@ TEST(state_check_order_and_unread_fields) {
 
 TEST(immovable_bad_force) {
     /* A NaN force on an immovable particle: its acceleration is 0 whatever the force, but the data is bad,
-       as motus_particle_check and motus_state_check say. HEADER BUG (release builds): motus_step selects the
+       as motus_particle_check and motus_state_check say. HEADER BUG: (release builds) motus_step selects the
        acceleration of an immovable particle to 0 before the check sum sees the NaN, so it returns MOTUS_OK;
        so does motus_particle_step (motus__step sets v back to the old velocity before its finite check). */
     int pattern, m;
@@ -960,7 +960,7 @@ TEST(overflow_with_finite_data) {
                     calls = CALLBACK_CALLS;
                     r = motus_step(&W.scene, &W.state, 8, W.scratch, sizeof W.scratch);
 #ifdef MOTUS_CHECKED
-                    /* HEADER BUG (coupled): the checked build checks the data of a coupled scene but makes no
+                    /* HEADER BUG: (coupled scenes) the checked build checks the data of a coupled scene but makes no
                        dry run, so an overflow there writes and returns MOTUS_ERROR_NOT_FINITE. (The scratch
                        is working memory: it may change.) */
                     memcpy(W.scratch, BEFORE.scratch, sizeof W.scratch);

@@ -432,7 +432,7 @@ TEST(dt_zero_is_a_valid_no_op) {
             ENSURE_EQ_INT(motus_particle3_step_compensated(&q, &carry3, zeros[z]), MOTUS_OK);
             ENSURE_UNCHANGED(q, before3);
             ENSURE_UNCHANGED(carry3, carry3_before);
-            /* HEADER BUG (variant 1): motus__damp flushes components below MOTUS_REST_SPEED even when the
+            /* HEADER BUG: (variant 1) motus__damp flushes components below MOTUS_REST_SPEED even when the
                kept factor is (1 - d)^0 = 1, so a dt == 0 damp_per_second changes the velocity. */
             ENSURE_EQ_INT(motus_particle_damp_per_second(&p, MOTUS_R(0.5), zeros[z]), MOTUS_OK);
             ENSURE_UNCHANGED(p, before);
@@ -929,7 +929,7 @@ TEST(max_stable_dt_values) {
     /* Extremes without an intermediate overflow or underflow: k/m or m/k out of range, the answer not. */
     ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_SEMI_IMPLICIT_EULER, MOTUS_R(1e30), MOTUS_R(1e-30), &dt), MOTUS_OK);
     ENSURE_NEAR(dt / 2e-30, 1, 16 * EPS);
-    /* HEADER BUG (float): k/m = 1e-60 underflows to 0, which motus__stable_dt reads as "no spring", so the
+    /* HEADER BUG: (float) k/m = 1e-60 underflows to 0, which motus__stable_dt reads as "no spring", so the
        result is +Inf instead of 2*sqrt(1e30/1e-30) = 2e30. */
     ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_SEMI_IMPLICIT_EULER, MOTUS_R(1e-30), MOTUS_R(1e30), &dt), MOTUS_OK);
     ENSURE_NEAR(dt / 2e30, 1, 16 * EPS);
