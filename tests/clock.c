@@ -163,6 +163,34 @@ TEST(huge_frames_and_tiny_steps) {
     ENSURE(motus_clock_alpha(&tiny) >= 0 && motus_clock_alpha(&tiny) < 1);
 }
 
+TEST(dropped_steps_saturate_instead_of_wrapping) {
+    /* steps_dropped_total near UINT64_MAX by hand, then a hitch: it stops at UINT64_MAX (never wraps to a
+       small count), and the next hitch leaves it there. steps_total likewise. */
+    motus_clock clock = make_clock(DT, 0);
+    int steps;
+    clock.steps_dropped_total = UINT64_MAX - 5;
+    ENSURE_EQ_INT(motus_clock_advance(&clock, 2, &steps), MOTUS_OK); /* ~112 dropped */
+    ENSURE_EQ_INT(steps, 8);
+    ENSURE(clock.steps_dropped_last_frame >= 111);
+    ENSURE(clock.steps_dropped_total == UINT64_MAX);
+    ENSURE_EQ_INT(motus_clock_advance(&clock, 2, &steps), MOTUS_OK);
+    ENSURE(clock.steps_dropped_total == UINT64_MAX);
+    ENSURE_EQ_INT(motus_clock_advance(&clock, REAL_MAX, &steps), MOTUS_OK); /* the huge-frame path */
+    ENSURE(clock.steps_dropped_total == UINT64_MAX);
+    /* Exactly reaching the maximum is not a wrap either. */
+    clock = make_clock(DT, 2);
+    clock.steps_dropped_total = UINT64_MAX - 3;
+    ENSURE_EQ_INT(motus_clock_advance(&clock, DT * MOTUS_R(5.5), &steps), MOTUS_OK); /* 3 dropped */
+    ENSURE(clock.steps_dropped_last_frame == 3);
+    ENSURE(clock.steps_dropped_total == UINT64_MAX);
+    /* The steps run saturate the same way. */
+    clock = make_clock(DT, 0);
+    clock.steps_total = UINT64_MAX - 1;
+    ENSURE_EQ_INT(motus_clock_advance(&clock, 3 * DT, &steps), MOTUS_OK);
+    ENSURE_EQ_INT(steps, 3);
+    ENSURE(clock.steps_total == UINT64_MAX);
+}
+
 TEST(frame_of_zero_runs_nothing) {
     motus_clock clock = make_clock(DT, 0), before;
     int steps = 99;
@@ -219,17 +247,20 @@ TEST(alpha_stays_below_one) {
 
 TEST(vec2_lerp) {
     motus_vec2 a = motus_v2(2, -4), b = motus_v2(6, 8);
+    motus_vec3 c = motus_v3(2, -4, 1), e = motus_v3(6, 8, -3);
     ENSURE(motus_vec2_lerp(a, b, 0).x == 2 && motus_vec2_lerp(a, b, 0).y == -4);
     ENSURE(motus_vec2_lerp(a, b, 1).x == 6 && motus_vec2_lerp(a, b, 1).y == 8);
     ENSURE(motus_vec2_lerp(a, b, MOTUS_R(0.25)).x == 3 && motus_vec2_lerp(a, b, MOTUS_R(0.25)).y == -1);
+    ENSURE(motus_vec3_lerp(c, e, MOTUS_R(0.25)).z == 0 && motus_vec3_lerp(c, e, 0).z == 1);
 }
 
 /* The reference program's particle (mass 2, 100 N per held key, 0.99 per frame at 60 Hz turned into a
-   per-second damping) stepped through a clock with frames of 1/rate s until `total_steps` steps ran. The
+   fraction removed per second) stepped through a clock with frames of 1/rate s until `total_steps` steps ran. The
    keys are a function of the simulated time (D for the first second, then S and A), as a replay would
    feed them. Returns the frames it took. */
 static int run_wsad(int rate, int total_steps, motus_particle *out, motus_clock *clock_out) {
-    const motus_real retained = motus_damping_per_second_from_per_step(MOTUS_R(0.99), 60);
+    /* 0.01 removed per step at 60 Hz, as a fraction removed per second: 1 - 0.99^60. */
+    const motus_real damping = (motus_real)(1 - pow(0.99, 60));
     const motus_real frame_seconds = MOTUS_R(1.0) / (motus_real)rate;
     motus_clock clock = make_clock(DT, 0);
     motus_particle p;
@@ -245,7 +276,7 @@ static int run_wsad(int rate, int total_steps, motus_particle *out, motus_clock 
             else if (step < 90) motus_particle_add_force(&p, motus_v2(0, 100));
             else if (step < 150) motus_particle_add_force(&p, motus_v2(-100, 0));
             ENSURE_EQ_INT(motus_particle_step(&p, clock.fixed_dt), MOTUS_OK);
-            ENSURE_EQ_INT(motus_particle_damp_per_second(&p, retained, clock.fixed_dt), MOTUS_OK);
+            ENSURE_EQ_INT(motus_particle_damp_per_second(&p, damping, clock.fixed_dt), MOTUS_OK);
         }
     }
     *out = p;
@@ -281,6 +312,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(frames_of_1ms_and_100ms),
     TEST_CASE(hitch_of_2s_is_capped_and_reported),
     TEST_CASE(huge_frames_and_tiny_steps),
+    TEST_CASE(dropped_steps_saturate_instead_of_wrapping),
     TEST_CASE(frame_of_zero_runs_nothing),
     TEST_CASE(bad_frame_times_are_rejected_and_change_nothing),
     TEST_CASE(alpha_stays_below_one),

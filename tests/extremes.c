@@ -1,6 +1,10 @@
-/* Extremes: far from the origin, overflow near the float maximum, damping factors, subnormal speeds.
-   Built in float and in double (MOTUS_DOUBLE). The far-from-origin and subnormal tests print the figures
-   they measure (run `motus_extremes far_from_origin_plain_step_loses_small_steps`, ...). */
+/* Extremes: far from the origin, overflow near the float maximum, damping factors, subnormal speeds, and
+   the adversarial classes of issue 11 item 8 (a stable dt of -0, an attractor 1e13 and 1e20 m away, the exact
+   stepper at drag 1e38 over 1e20 s, a spring of 1e20 N/m at its rest length of 1e20 m, a subnormal dt split
+   in substeps, the stable dt without scratch). Built in float and in double (MOTUS_DOUBLE). The
+   far-from-origin and subnormal tests print the figures they measure (run
+   `motus_extremes far_from_origin_plain_step_loses_small_steps`, ...). */
+#define MOTUS_IMPLEMENTATION
 #include "motus.h"
 #include "support/motus_test.h"
 
@@ -9,10 +13,12 @@
 #ifdef MOTUS_DOUBLE
 #define REAL_MAX DBL_MAX
 #define REAL_MIN_NORMAL DBL_MIN
+#define REAL_TRUE_MIN 4.9406564584124654e-324
 #define PRECISION "double"
 #else
 #define REAL_MAX FLT_MAX
 #define REAL_MIN_NORMAL FLT_MIN
+#define REAL_TRUE_MIN 1.40129846e-45f
 #define PRECISION "float"
 #endif
 
@@ -103,7 +109,7 @@ TEST(compensated_step_rejects_bad_input) {
     before = p;
     ENSURE_EQ_INT(motus_particle_step_compensated(NULL, &carry, DT), MOTUS_ERROR_NULL_POINTER);
     ENSURE_EQ_INT(motus_particle_step_compensated(&p, NULL, DT), MOTUS_ERROR_NULL_POINTER);
-    ENSURE_EQ_INT(motus_particle_step_compensated(&p, &carry, 0), MOTUS_ERROR_INVALID_TIME_STEP);
+    ENSURE_EQ_INT(motus_particle_step_compensated(&p, &carry, -DT), MOTUS_ERROR_INVALID_TIME_STEP);
     ENSURE_EQ_INT(motus_particle_step_compensated(&p, &carry, not_a_number()), MOTUS_ERROR_INVALID_TIME_STEP);
     ENSURE_EQ_INT(motus_particle_step_compensated(&p, &bad_carry, DT), MOTUS_ERROR_NOT_FINITE);
     p.velocity.y = infinity();
@@ -120,156 +126,196 @@ TEST(compensated_step_rejects_bad_input) {
     ENSURE(same_bytes(&carry, &carry_before, sizeof carry));
 }
 
+
+TEST(far_from_origin_compensated_step_3d) {
+    /* The same in 3D, each axis at its own distance (z at -1e6 m moving -1 m/s): the carry keeps every
+       component's small steps; the plain 3D step loses them in float as the 2D one does. */
+    motus_particle3 p, plain;
+    motus_vec3 carry = motus_v3(0, 0, 0);
+    double error_x, error_z;
+    int i;
+    motus_particle3_init(&p, motus_v3((motus_real)FAR, 5, -(motus_real)FAR), 1);
+    p.velocity = motus_v3(1, 0, -1);
+    plain = p;
+    for (i = 0; i < FAR_STEPS; ++i) {
+        ENSURE_EQ_INT(motus_particle3_step_compensated(&p, &carry, DT), MOTUS_OK);
+        ENSURE_EQ_INT(motus_particle3_step(&plain, DT), MOTUS_OK);
+    }
+    error_x = fabs((double)p.position.x - far_expected());
+    error_z = fabs(-(double)p.position.z - far_expected());
+    printf("  %s, 3D compensated step: x error %.3g m, z error %.3g m; plain x error %.3g m\n", PRECISION, error_x,
+           error_z, fabs((double)plain.position.x - far_expected()));
+    ENSURE(error_x <= 0.5 * (FAR * MOTUS_REAL_EPSILON) + 1e-9);
+    ENSURE(error_z == error_x);
+    ENSURE(p.position.y == 5);
+    ENSURE(same_bytes(&p.velocity, &plain.velocity, sizeof p.velocity));
+#ifndef MOTUS_DOUBLE
+    ENSURE(plain.position.x == (motus_real)FAR && plain.position.z == -(motus_real)FAR);
+#endif
+}
+
 /* =================================================================================================
    Overflow near the float maximum: reported, nothing written
    ================================================================================================= */
 TEST(particle_step_overflow_near_max) {
-    /* Velocity: v + F/m*dt past the maximum; position: x + v*dt past it; both near +-max. */
+    /* Velocity: v + F/m*dt past the maximum; position: x + v*dt past it; both near +-max; 2D and 3D. */
     const motus_real near_max = REAL_MAX * MOTUS_R(0.75);
     int sign;
     for (sign = -1; sign <= 1; sign += 2) {
+        const motus_real s = (motus_real)sign;
         motus_particle p, before;
+        motus_particle3 q, before3;
+        memset(&q, 0, sizeof q);
         motus_particle_init(&p, motus_v2(0, 0), 1);
-        p.velocity = motus_v2(0, (motus_real)sign * near_max);
-        p.force = motus_v2(0, (motus_real)sign * near_max);
+        p.velocity = motus_v2(0, s * near_max);
+        p.force = motus_v2(0, s * near_max);
         before = p;
         ENSURE_EQ_INT(motus_particle_step(&p, 1), MOTUS_ERROR_OVERFLOW);
-        ENSURE_EQ_INT(motus_particle_step_linear_drag(&p, 0, 1), MOTUS_ERROR_OVERFLOW);
         ENSURE(same_bytes(&p, &before, sizeof p));
         p.force = motus_v2(0, 0);
-        p.position = motus_v2((motus_real)sign * near_max, 0);
-        p.velocity = motus_v2((motus_real)sign * near_max, 0);
+        p.position = motus_v2(s * near_max, 0);
+        p.velocity = motus_v2(s * near_max, 0);
         before = p;
         ENSURE_EQ_INT(motus_particle_step(&p, 1), MOTUS_ERROR_OVERFLOW);
         ENSURE(same_bytes(&p, &before, sizeof p));
-        /* One step short of the edge is fine: dt small enough to stay finite. */
+        /* A quarter step is fine: dt small enough to stay finite. */
         ENSURE_EQ_INT(motus_particle_step(&p, MOTUS_R(0.25)), MOTUS_OK);
         ENSURE(motus_real_is_finite(p.position.x));
         /* A force at the maximum on a light particle: F/m overflows before dt can shrink it. */
         motus_particle_init(&p, motus_v2(0, 0), MOTUS_R(0.5));
-        p.force = motus_v2((motus_real)sign * REAL_MAX, 0);
+        p.force = motus_v2(s * REAL_MAX, 0);
         before = p;
         ENSURE_EQ_INT(motus_particle_step(&p, MOTUS_R(1e-6)), MOTUS_ERROR_OVERFLOW);
         ENSURE(same_bytes(&p, &before, sizeof p));
+        motus_particle3_init(&q, motus_v3(0, 0, s * near_max), 1);
+        q.velocity = motus_v3(0, 0, s * near_max);
+        before3 = q;
+        ENSURE_EQ_INT(motus_particle3_step(&q, 1), MOTUS_ERROR_OVERFLOW);
+        ENSURE(same_bytes(&q, &before3, sizeof q));
+        q.force = motus_v3(s * REAL_MAX, 0, 0);
+        q.inverse_mass = 2;
+        q.velocity = motus_v3(0, 0, 0);
+        before3 = q;
+        ENSURE_EQ_INT(motus_particle3_step(&q, MOTUS_R(1e-6)), MOTUS_ERROR_OVERFLOW);
+        ENSURE(same_bytes(&q, &before3, sizeof q));
     }
 }
 
-TEST(stepper_overflow_near_max_one_method_per_family) {
-    /* Euler, Verlet, Runge-Kutta, composition (Forest-Ruth) and the exact stepper: particle 0 fine,
-       particle 1 at max/8 in position and velocity (or force; RK4 sums 6 slopes, so not much nearer):
-       fine at dt 1/4, MOTUS_ERROR_OVERFLOW at dt 16 with nothing written, not the particles, not the
-       stepper. */
+/* A 2D state of n particles over its own arrays. */
+typedef struct small_state {
+    motus_real x[16], y[16], z[16], vx[16], vy[16], vz[16], fx[16], fy[16], fz[16], inverse_mass[16];
+    motus_state state;
+} small_state;
+static void small_state_bind(small_state *b, int dims, int count) {
+    memset(&b->state, 0, sizeof b->state);
+    b->state.dimensions = dims;
+    b->state.count = count;
+    b->state.position[0] = b->x, b->state.position[1] = b->y;
+    b->state.velocity[0] = b->vx, b->state.velocity[1] = b->vy;
+    b->state.force[0] = b->fx, b->state.force[1] = b->fy;
+    if (dims == 3) {
+        b->state.position[2] = b->z;
+        b->state.velocity[2] = b->vz;
+        b->state.force[2] = b->fz;
+    }
+    b->state.inverse_mass = b->inverse_mass;
+}
+static void small_state_fill(small_state *b) {
+    int i;
+    for (i = 0; i < 16; ++i) {
+        b->x[i] = b->y[i] = b->z[i] = (motus_real)i;
+        b->vx[i] = b->vy[i] = b->vz[i] = 1;
+        b->fx[i] = b->fy[i] = b->fz[i] = 1;
+        b->inverse_mass[i] = 1;
+    }
+}
+
+TEST(step_overflow_near_max_one_method_per_family) {
+    /* Euler, Verlet, Runge-Kutta, composition (Forest-Ruth) and the exact stepper, 2D and 3D: particle `at`
+       (in a whole vector, or the partial one) at max/8 in position and velocity, or velocity and force:
+       fine at dt 1/4; at dt 16 never MOTUS_OK. Release builds write and report MOTUS_ERROR_NOT_FINITE (the
+       inputs are gone, the step cannot tell overflow from bad data); MOTUS_CHECKED builds report
+       MOTUS_ERROR_OVERFLOW and write nothing. */
     static const motus_method methods[5] = {MOTUS_SEMI_IMPLICIT_EULER, MOTUS_VELOCITY_VERLET, MOTUS_RK4,
                                             MOTUS_FOREST_RUTH, MOTUS_EXACT_LINEAR_DRAG};
     const motus_real near_max = REAL_MAX / 8;
-    int m, which;
-    for (m = 0; m < 5; ++m)
-        for (which = 0; which < 2; ++which) {
-            motus_vec2 scratch[8 * 2];
-            motus_stepper_desc desc;
-            motus_stepper stepper, stepper_before;
-            motus_particle p[2], before[2];
-            memset(&desc, 0, sizeof desc);
-            memset(&stepper, 0, sizeof stepper);
-            desc.capacity = 2;
-            desc.method = methods[m];
-            desc.scratch = scratch;
-            desc.scratch_bytes = sizeof scratch;
-            ENSURE_EQ_INT(motus_stepper_init(&stepper, &desc), MOTUS_OK);
-            motus_particle_init(&p[0], motus_v2(1, 2), 1);
-            motus_particle_init(&p[1], motus_v2(0, 0), 1);
-            if (which == 0) p[1].position = p[1].velocity = motus_v2(near_max, -near_max);
-            else p[1].velocity = p[1].force = motus_v2(-near_max, near_max);
-            ENSURE_EQ_INT(motus_stepper_step(&stepper, p, 2, NULL, MOTUS_R(0.25)), MOTUS_OK); /* fine at 0.25 */
-            memcpy(before, p, sizeof p);
-            stepper_before = stepper;
-            if (motus_stepper_step(&stepper, p, 2, NULL, 16) != MOTUS_ERROR_OVERFLOW) {
-                fprintf(stderr, "  %s, %s: no overflow reported\n", motus_method_name(methods[m]),
-                        which ? "velocity" : "position");
-                motus_test_failures++;
-            }
-            ENSURE(same_bytes(p, before, sizeof p));
-            ENSURE(same_bytes(&stepper, &stepper_before, sizeof stepper));
-        }
-}
-
-/* A 2D batch of n particles with their own arrays. */
-typedef struct small_batch {
-    motus_real x[16], y[16], vx[16], vy[16], fx[16], fy[16], inverse_mass[16];
-    motus_batch batch;
-} small_batch;
-static void small_batch_bind(small_batch *b) {
-    memset(&b->batch, 0, sizeof b->batch);
-    b->batch.dimensions = 2;
-    b->batch.position[0] = b->x, b->batch.position[1] = b->y;
-    b->batch.velocity[0] = b->vx, b->batch.velocity[1] = b->vy;
-    b->batch.force[0] = b->fx, b->batch.force[1] = b->fy;
-    b->batch.inverse_mass = b->inverse_mass;
-}
-
-TEST(batch_overflow_near_max_is_reported) {
-    /* Release builds write the range and report a non-finite result (MOTUS_ERROR_NOT_FINITE: the inputs
-       are gone, so the step cannot tell overflow from bad data); MOTUS_CHECKED builds (batch_checked.*
-       in tests/batch.c) report MOTUS_ERROR_OVERFLOW and write nothing. Here: position and velocity
-       overflow, in a whole vector and in the partial one, are never reported as OK. */
-    static small_batch b;
-    motus_scene scene;
-    int at, which, i;
-    for (at = 0; at < 16; at += 15)
-        for (which = 0; which < 2; ++which) {
-            memset(&scene, 0, sizeof scene);
-            scene.has = MOTUS_HAS_FORCES | MOTUS_HAS_PARTICLE_MASS | MOTUS_HAS_DAMPING_PER_STEP;
-            scene.damping = MOTUS_R(0.99);
-            small_batch_bind(&b);
-            for (i = 0; i < 16; ++i) {
-                b.x[i] = b.y[i] = (motus_real)i;
-                b.vx[i] = b.vy[i] = b.fx[i] = b.fy[i] = 1;
-                b.inverse_mass[i] = 1;
-            }
-            if (which == 0) b.x[at] = b.vx[at] = REAL_MAX * MOTUS_R(0.75);
-            else b.fy[at] = REAL_MAX, b.inverse_mass[at] = 4;
-            ENSURE_EQ_INT(motus_batch_check(&scene, &b.batch, 0, 16, NULL, NULL), MOTUS_OK);
-            ENSURE(motus_batch_step(&scene, &b.batch, 0, 16, 1) != MOTUS_OK);
-        }
+    static small_state b, before;
+    int m, which, dims, at;
+    for (dims = 2; dims <= 3; ++dims)
+        for (m = 0; m < 5; ++m)
+            for (at = 0; at < 16; at += 15)
+                for (which = 0; which < 2; ++which) {
+                    motus_scene scene;
+                    motus_result r;
+                    memset(&scene, 0, sizeof scene);
+                    scene.method = methods[m];
+                    scene.damping_per_step = MOTUS_R(0.01);
+                    small_state_fill(&b);
+                    small_state_bind(&b, dims, 16);
+                    if (which == 0) b.x[at] = b.vx[at] = near_max, b.z[at] = b.vz[at] = -near_max;
+                    else b.vy[at] = b.fy[at] = -near_max;
+                    ENSURE_EQ_INT(motus_step(&scene, &b.state, MOTUS_R(0.25), NULL, 0), MOTUS_OK);
+                    memcpy(&before, &b, sizeof b);
+                    r = motus_step(&scene, &b.state, 16, NULL, 0);
+#ifdef MOTUS_CHECKED
+                    ENSURE_EQ_INT(r, MOTUS_ERROR_OVERFLOW);
+                    ENSURE(same_bytes(&b, &before, sizeof b));
+#else
+                    ENSURE_EQ_INT(r, MOTUS_ERROR_NOT_FINITE);
+#endif
+                    if (r == MOTUS_OK)
+                        fprintf(stderr, "  %s, %dD, particle %d: no overflow reported\n",
+                                motus_method_name(methods[m]), dims, at);
+                }
 }
 
 /* =================================================================================================
    Damping factors 0, 1, above 1, negative, NaN
    ================================================================================================= */
 TEST(damping_factors_accepted_or_rejected_as_documented) {
-    /* [0, 1] is accepted (-0 too: it is 0); everything else is MOTUS_ERROR_INVALID_DAMPING with the
-       particle unchanged, in both particle functions and in the batch scene (per step and per second). */
+    /* The fraction removed, in [0, 1] (-0 too: it is 0); everything else is MOTUS_ERROR_INVALID_DAMPING with
+       nothing changed, in the particle functions (2D, 3D) and in the scene (per step and per second). */
     const motus_real accepted[] = {0, -MOTUS_R(0.0), MOTUS_R(0.5), 1};
     const motus_real rejected[] = {1 + MOTUS_REAL_EPSILON, 2, infinity(), -MOTUS_R(1e-30), MOTUS_R(-0.5),
                                    -1, -infinity(), not_a_number(), -not_a_number()};
-    static small_batch b;
+    static small_state b, b_before;
     motus_scene scene;
     motus_particle p, before;
+    motus_particle3 q3, before3;
     int i, per_second;
     motus_particle_init(&p, motus_v2(1, 2), 1);
     p.velocity = motus_v2(3, -4);
     before = p;
-    small_batch_bind(&b);
-    memset(&scene, 0, sizeof scene);
+    motus_particle3_init(&q3, motus_v3(1, 2, 3), 1);
+    q3.velocity = motus_v3(3, -4, 5);
+    before3 = q3;
+    small_state_fill(&b);
+    small_state_bind(&b, 2, 1);
+    memcpy(&b_before, &b, sizeof b);
     for (i = 0; i < (int)(sizeof rejected / sizeof rejected[0]); ++i) {
         ENSURE_EQ_INT(motus_particle_damp_per_step(&p, rejected[i]), MOTUS_ERROR_INVALID_DAMPING);
         ENSURE_EQ_INT(motus_particle_damp_per_second(&p, rejected[i], DT), MOTUS_ERROR_INVALID_DAMPING);
+        ENSURE_EQ_INT(motus_particle3_damp_per_step(&q3, rejected[i]), MOTUS_ERROR_INVALID_DAMPING);
+        ENSURE_EQ_INT(motus_particle3_damp_per_second(&q3, rejected[i], DT), MOTUS_ERROR_INVALID_DAMPING);
         for (per_second = 0; per_second < 2; ++per_second) {
-            scene.has = per_second ? MOTUS_HAS_DAMPING_PER_SECOND : MOTUS_HAS_DAMPING_PER_STEP;
-            scene.damping = rejected[i];
-            ENSURE_EQ_INT(motus_scene_check(&scene, &b.batch), MOTUS_ERROR_INVALID_DAMPING);
-            ENSURE_EQ_INT(motus_batch_step(&scene, &b.batch, 0, 1, DT), MOTUS_ERROR_INVALID_DAMPING);
+            memset(&scene, 0, sizeof scene);
+            if (per_second) scene.damping_per_second = rejected[i];
+            else scene.damping_per_step = rejected[i];
+            ENSURE_EQ_INT(motus_scene_check(&scene, 2, 1, NULL), MOTUS_ERROR_INVALID_DAMPING);
+            ENSURE_EQ_INT(motus_step(&scene, &b.state, DT, NULL, 0), MOTUS_ERROR_INVALID_DAMPING);
         }
     }
     ENSURE(same_bytes(&p, &before, sizeof p));
+    ENSURE(same_bytes(&q3, &before3, sizeof q3));
+    ENSURE(same_bytes(&b, &b_before, sizeof b));
     for (i = 0; i < (int)(sizeof accepted / sizeof accepted[0]); ++i) {
         motus_particle q = before, r = before;
         const motus_real f = accepted[i];
         ENSURE_EQ_INT(motus_particle_damp_per_step(&q, f), MOTUS_OK);
         ENSURE_EQ_INT(motus_particle_damp_per_second(&r, f, DT), MOTUS_OK);
-        if (f == 1) { /* keeps the velocity exactly */
+        if (f == 0) { /* removes nothing: the velocity exactly */
             ENSURE(same_bytes(&q, &before, sizeof q) && same_bytes(&r, &before, sizeof r));
-        } else if (f == 0) { /* stops the particle, per step and per second at any dt */
+        } else if (f == 1) { /* removes everything, per step and per second at any dt */
             ENSURE(q.velocity.x == 0 && q.velocity.y == 0 && r.velocity.x == 0 && r.velocity.y == 0);
         } else {
             ENSURE(q.velocity.x == MOTUS_R(1.5) && q.velocity.y == -2);
@@ -277,11 +323,14 @@ TEST(damping_factors_accepted_or_rejected_as_documented) {
         }
         for (per_second = 0; per_second < 2; ++per_second) {
             motus_particle single = before;
-            scene.has = per_second ? MOTUS_HAS_DAMPING_PER_SECOND : MOTUS_HAS_DAMPING_PER_STEP;
-            scene.damping = f;
+            memset(&scene, 0, sizeof scene);
+            if (per_second) scene.damping_per_second = f;
+            else scene.damping_per_step = f;
+            b.state.force[0] = b.state.force[1] = NULL;
+            b.state.inverse_mass = NULL;
             b.x[0] = before.position.x, b.y[0] = before.position.y;
             b.vx[0] = before.velocity.x, b.vy[0] = before.velocity.y;
-            ENSURE_EQ_INT(motus_batch_step(&scene, &b.batch, 0, 1, DT), MOTUS_OK);
+            ENSURE_EQ_INT(motus_step(&scene, &b.state, DT, NULL, 0), MOTUS_OK);
             motus_particle_step(&single, DT);
             if (per_second) motus_particle_damp_per_second(&single, f, DT);
             else motus_particle_damp_per_step(&single, f);
@@ -306,7 +355,9 @@ TEST(rest_speed_keeps_v_dt_normal) {
 TEST(damping_flushes_to_exact_zero_at_the_rest_speed) {
     const motus_real rest = (motus_real)(MOTUS_REST_SPEED);
     motus_particle p;
+    motus_particle3 q;
     motus_particle_init(&p, motus_v2(0, 0), 1);
+    motus_particle3_init(&q, motus_v3(0, 0, 0), 1);
     /* Just below after damping: zero, of the component's sign. Just above: kept. */
     p.velocity = motus_v2(rest * MOTUS_R(1.5), -rest * MOTUS_R(1.5));
     ENSURE_EQ_INT(motus_particle_damp_per_step(&p, MOTUS_R(0.5)), MOTUS_OK);
@@ -314,24 +365,27 @@ TEST(damping_flushes_to_exact_zero_at_the_rest_speed) {
     p.velocity = motus_v2(rest * 4, -rest * 4);
     ENSURE_EQ_INT(motus_particle_damp_per_step(&p, MOTUS_R(0.5)), MOTUS_OK);
     ENSURE(p.velocity.x == rest * 2 && p.velocity.y == -rest * 2);
-    /* A velocity that comes in subnormal leaves as zero; a normal one at 1 is left alone (bit for bit). */
+    q.velocity = motus_v3(rest * 4, 1, -rest * MOTUS_R(1.5));
+    ENSURE_EQ_INT(motus_particle3_damp_per_step(&q, MOTUS_R(0.5)), MOTUS_OK);
+    ENSURE(q.velocity.x == rest * 2 && q.velocity.y == MOTUS_R(0.5) && q.velocity.z == 0 && signbit(q.velocity.z));
+    /* A velocity that comes in subnormal leaves as zero; a normal one is left alone (removing nothing). */
     p.velocity = motus_v2(REAL_MIN_NORMAL / 8, 1);
-    ENSURE_EQ_INT(motus_particle_damp_per_second(&p, 1, DT), MOTUS_OK);
+    ENSURE_EQ_INT(motus_particle_damp_per_second(&p, 0, DT), MOTUS_OK);
     ENSURE(p.velocity.x == 0 && p.velocity.y == 1);
 }
 
-/* Damp (1, -0.3) by 0.99 per step, or the per-second equivalent, until it stops; returns the steps taken,
-   counts the steps that left a subnormal component. */
+/* Damp (1, -0.3) by 0.01 removed per step, or the per-second equivalent, until it stops; returns the steps
+   taken, counts the steps that left a subnormal component. */
 static int steps_to_rest(int per_second, int *subnormal_steps) {
-    const motus_real retained = motus_damping_per_second_from_per_step(MOTUS_R(0.99), 60);
+    const motus_real damping = (motus_real)(1 - pow(0.99, 60));
     motus_particle p;
     int steps = 0;
     motus_particle_init(&p, motus_v2(0, 0), 1);
     p.velocity = motus_v2(1, MOTUS_R(-0.3));
     *subnormal_steps = 0;
     while ((p.velocity.x != 0 || p.velocity.y != 0) && steps < 1000000) {
-        if (per_second) motus_particle_damp_per_second(&p, retained, DT);
-        else motus_particle_damp_per_step(&p, MOTUS_R(0.99));
+        if (per_second) motus_particle_damp_per_second(&p, damping, DT);
+        else motus_particle_damp_per_step(&p, MOTUS_R(0.01));
         *subnormal_steps += is_subnormal(p.velocity.x) || is_subnormal(p.velocity.y);
         ++steps;
     }
@@ -339,16 +393,16 @@ static int steps_to_rest(int per_second, int *subnormal_steps) {
 }
 
 TEST(damping_reaches_exact_zero_without_subnormals) {
-    /* The old damping (v *= 0.99) from 1 m/s never reaches 0: below 50 times the smallest subnormal,
-       0.99*v rounds back to v, so the speed stays subnormal (and slow) for ever. With the flush: exact zero
-       at 1e-30 (1e-300 in double), after ln(1e-30)/ln(0.99) = 6,874 steps (68,732), never a subnormal. */
+    /* A plain v *= 0.99 from 1 m/s never reaches 0: below 50 times the smallest subnormal, 0.99*v rounds
+       back to v, so the speed stays subnormal (and slow) for ever. With the flush: exact zero at 1e-30
+       (1e-300 in double), after ln(1e-30)/ln(0.99) = 6,874 steps (68,732), never a subnormal. */
     motus_real v = 1;
     int old_steps, old_subnormal = 0, per_second, subnormal, steps;
     for (old_steps = 0; old_steps < 200000; ++old_steps) {
         v = v * MOTUS_R(0.99);
         old_subnormal += is_subnormal(v);
     }
-    printf("  %s, old damping: after %d steps v = %g, subnormal for the last %d steps\n", PRECISION, old_steps,
+    printf("  %s, plain v *= 0.99: after %d steps v = %g, subnormal for the last %d steps\n", PRECISION, old_steps,
            (double)v, old_subnormal);
     ENSURE(v != 0 && is_subnormal(v));
     for (per_second = 0; per_second < 2; ++per_second) {
@@ -360,20 +414,23 @@ TEST(damping_reaches_exact_zero_without_subnormals) {
     }
 }
 
-TEST(batch_damping_reaches_exact_zero_as_the_particle_path) {
-    /* A batch of 13 particles (a whole vector and a partial one) under per-step and per-second damping,
-       gravity off: every velocity reaches exact zero, no subnormal on the way, and the batch agrees with
+TEST(scene_damping_reaches_exact_zero_as_the_particle_path) {
+    /* A scene over 13 particles (a whole vector and a partial one) under per-step and per-second damping,
+       nothing else: every velocity reaches exact zero, no subnormal on the way, and the scene agrees with
        motus_particle_step + damping bit for bit at every step. */
-    static small_batch b;
+    static small_state b;
     motus_scene scene;
     motus_particle p[13];
-    int per_second, i, step, subnormal = 0, mismatch = 0, moving = 1;
+    int per_second, i, step;
     for (per_second = 0; per_second < 2; ++per_second) {
+        const motus_real damping = per_second ? MOTUS_R(0.99) : MOTUS_R(0.1);
+        int subnormal = 0, mismatch = 0, moving = 1;
         memset(&scene, 0, sizeof scene);
-        scene.has = per_second ? MOTUS_HAS_DAMPING_PER_SECOND : MOTUS_HAS_DAMPING_PER_STEP;
-        scene.damping = per_second ? MOTUS_R(0.01) : MOTUS_R(0.9);
-        scene.inverse_mass = 1;
-        small_batch_bind(&b);
+        if (per_second) scene.damping_per_second = damping;
+        else scene.damping_per_step = damping;
+        small_state_bind(&b, 2, 13);
+        b.state.force[0] = b.state.force[1] = NULL;
+        b.state.inverse_mass = NULL;
         for (i = 0; i < 13; ++i) {
             motus_particle_init(&p[i], motus_v2((motus_real)i, -(motus_real)i), 1);
             p[i].velocity = motus_v2((motus_real)(i - 6) * MOTUS_R(0.37), (motus_real)(i % 3) - 1);
@@ -381,12 +438,12 @@ TEST(batch_damping_reaches_exact_zero_as_the_particle_path) {
             b.vx[i] = p[i].velocity.x, b.vy[i] = p[i].velocity.y;
         }
         for (step = 0; step < 20000 && moving; ++step) {
-            ENSURE_EQ_INT(motus_batch_step(&scene, &b.batch, 0, 13, DT), MOTUS_OK);
+            ENSURE_EQ_INT(motus_step(&scene, &b.state, DT, NULL, 0), MOTUS_OK);
             moving = 0;
             for (i = 0; i < 13; ++i) {
                 motus_particle_step(&p[i], DT);
-                if (per_second) motus_particle_damp_per_second(&p[i], scene.damping, DT);
-                else motus_particle_damp_per_step(&p[i], scene.damping);
+                if (per_second) motus_particle_damp_per_second(&p[i], damping, DT);
+                else motus_particle_damp_per_step(&p[i], damping);
                 mismatch += !same_bytes(&b.vx[i], &p[i].velocity.x, sizeof b.vx[i]) ||
                             !same_bytes(&b.vy[i], &p[i].velocity.y, sizeof b.vy[i]) ||
                             !same_bytes(&b.x[i], &p[i].position.x, sizeof b.x[i]);
@@ -400,38 +457,265 @@ TEST(batch_damping_reaches_exact_zero_as_the_particle_path) {
     }
 }
 
-TEST(batch_without_damping_does_not_flush) {
-    /* The flush belongs to damping: a scene without it keeps a tiny velocity (the general kernel, which
-       always multiplies by a neutral damping of 1, included). */
-    static small_batch b;
+TEST(scene_without_damping_does_not_flush) {
+    /* The flush belongs to damping: a scene without it keeps a tiny velocity (the costly-terms path, with
+       quadratic drag, included). */
+    static small_state b;
     motus_scene scene;
     int general;
     for (general = 0; general < 2; ++general) {
         memset(&scene, 0, sizeof scene);
-        scene.has = general ? MOTUS_HAS_QUADRATIC_DRAG : 0u;
-        scene.inverse_mass = 1;
-        small_batch_bind(&b);
+        scene.quadratic_drag = general ? MOTUS_R(0.5) : 0;
+        small_state_bind(&b, 2, 1);
+        b.state.force[0] = b.state.force[1] = NULL;
+        b.state.inverse_mass = NULL;
         b.x[0] = b.y[0] = 0;
         b.vx[0] = (motus_real)(MOTUS_REST_SPEED) / 4, b.vy[0] = 0;
-        ENSURE_EQ_INT(motus_batch_step(&scene, &b.batch, 0, 1, DT), MOTUS_OK);
+        ENSURE_EQ_INT(motus_step(&scene, &b.state, DT, NULL, 0), MOTUS_OK);
         ENSURE(b.vx[0] == (motus_real)(MOTUS_REST_SPEED) / 4);
     }
+}
+
+/* =================================================================================================
+   Adversarial inputs (issue 11, item 8)
+   ================================================================================================= */
+TEST(substeps_for_a_stable_dt_of_negative_zero_is_too_stiff) {
+    /* (a) -0 passes "max_stable_dt >= 0" and is finite: it must end as MOTUS_ERROR_TOO_STIFF, not a division
+       by zero turned into an int (undefined behaviour). Nothing written. */
+    int n = 1234;
+    ENSURE_EQ_INT(motus_substeps_for(1, -MOTUS_R(0.0), 1, &n), MOTUS_ERROR_TOO_STIFF);
+    ENSURE_EQ_INT(motus_substeps_for(DT, -MOTUS_R(0.0), MOTUS_R(0.5), &n), MOTUS_ERROR_TOO_STIFF);
+    ENSURE_EQ_INT(motus_substeps_for(REAL_TRUE_MIN, -MOTUS_R(0.0), 1, &n), MOTUS_ERROR_TOO_STIFF);
+    ENSURE_EQ_INT(motus_substeps_for(1, 0, 1, &n), MOTUS_ERROR_TOO_STIFF);
+    /* A stable dt whose safety product underflows to 0 is as stiff. */
+    ENSURE_EQ_INT(motus_substeps_for(1, REAL_TRUE_MIN, MOTUS_R(0.25), &n), MOTUS_ERROR_TOO_STIFF);
+    ENSURE_EQ_INT(n, 1234);
+    /* dt 0 needs one substep whatever the limit. */
+    ENSURE_EQ_INT(motus_substeps_for(0, -MOTUS_R(0.0), 1, &n), MOTUS_OK);
+    ENSURE_EQ_INT(n, 1);
+}
+
+/* The acceleration of the inverse-square pull at r from the attractor, in long double. */
+static void pull(const double *r, int dims, double mu, double *a) {
+    long double r2 = 0, length;
+    int d;
+    for (d = 0; d < dims; ++d) r2 += (long double)r[d] * r[d];
+    length = sqrtl(r2);
+    for (d = 0; d < dims; ++d) a[d] = (double)(-(long double)mu * r[d] / (r2 * length));
+}
+
+TEST(attractor_pull_far_away_is_representable) {
+    /* (c) At |r| = 1e13 and 1e20 m, with mu chosen so that the pull is about 0.01 m/s^2 (mu = 1e24 and 1e38,
+       representable in float), r^2 (1e40 at 1e20 m) overflows float: the pull must still be there and right
+       to 1e-5, in 2D and 3D, on an axis and on a diagonal, for a few methods. One step of 1 s from rest. */
+    static const motus_method methods[3] = {MOTUS_SEMI_IMPLICIT_EULER, MOTUS_VELOCITY_VERLET, MOTUS_RK4};
+    static const double distances[2] = {1e13, 1e20};
+    int k, m, dims, diagonal;
+    for (k = 0; k < 2; ++k)
+        for (dims = 2; dims <= 3; ++dims)
+            for (diagonal = 0; diagonal < 2; ++diagonal)
+                for (m = 0; m < 3; ++m) {
+                    const double mu = 0.01 * distances[k] * distances[k];
+                    double r[3], a[3];
+                    motus_real x[3], y[3], z[3], vx[3] = {0, 0, 0}, vy[3] = {0, 0, 0}, vz[3] = {0, 0, 0};
+                    motus_scene scene;
+                    motus_state state;
+                    int d;
+                    memset(&scene, 0, sizeof scene);
+                    memset(&state, 0, sizeof state);
+                    scene.method = methods[m];
+                    scene.attractor_strength = (motus_real)mu;
+                    r[0] = distances[k];
+                    r[1] = diagonal ? -distances[k] : 0;
+                    r[2] = dims == 3 && diagonal ? distances[k] : 0;
+                    x[0] = (motus_real)r[0], y[0] = (motus_real)r[1], z[0] = (motus_real)r[2];
+                    r[0] = (double)x[0], r[1] = (double)y[0], r[2] = (double)z[0]; /* what the state holds */
+                    pull(r, dims, (double)scene.attractor_strength, a);
+                    state.dimensions = dims;
+                    state.count = 1;
+                    state.position[0] = x, state.position[1] = y, state.position[2] = z;
+                    state.velocity[0] = vx, state.velocity[1] = vy, state.velocity[2] = vz;
+                    ENSURE_EQ_INT(motus_step(&scene, &state, 1, NULL, 0), MOTUS_OK);
+                    for (d = 0; d < dims; ++d) {
+                        const motus_real got = d == 0 ? vx[0] : d == 1 ? vy[0] : vz[0];
+                        if (a[d] == 0) ENSURE(got == 0);
+                        else if (!(fabs((double)got / a[d] - 1) <= 1e-5)) {
+                            fprintf(stderr, "  %s, %dD, |r| %g%s: a[%d] = %g, expected %g\n",
+                                    motus_method_name(methods[m]), dims, distances[k], diagonal ? " diagonal" : "",
+                                    d, (double)got, a[d]);
+                            motus_test_failures++;
+                        }
+                    }
+                }
+}
+
+TEST(exact_stepper_at_huge_drag_and_dt) {
+    /* (d) Drag 1e38 /s over 1e20 s: u = k*h = 1e58 overflows float, and h^2/2 = 5e39 too. The particle ends
+       at the terminal velocity a/k (1e-37 m/s, a normal float) after moving v0/k + a*(dt - 1/k)/k: finite,
+       correct, MOTUS_OK (not OVERFLOW). 2D and 3D. */
+    int dims;
+    for (dims = 2; dims <= 3; ++dims) {
+        const double k = (double)(motus_real)1e38, h = (double)(motus_real)1e20;
+        const double v0[3] = {1e30, -5, 2}, g[3] = {0, 10, -20};
+        motus_real x[3] = {0, 0, 0}, y[3] = {0, 0, 0}, z[3] = {0, 0, 0};
+        motus_real vx[3], vy[3], vz[3];
+        motus_real *xs[3] = {x, y, z}, *vs[3] = {vx, vy, vz};
+        motus_scene scene;
+        motus_state state;
+        int d;
+        memset(&scene, 0, sizeof scene);
+        memset(&state, 0, sizeof state);
+        scene.method = MOTUS_EXACT_LINEAR_DRAG;
+        scene.linear_drag = (motus_real)k;
+        scene.gravity = motus_v3((motus_real)g[0], (motus_real)g[1], (motus_real)g[2]);
+        vx[0] = (motus_real)v0[0], vy[0] = (motus_real)v0[1], vz[0] = (motus_real)v0[2];
+        state.dimensions = dims;
+        state.count = 1;
+        for (d = 0; d < 3; ++d) state.position[d] = xs[d], state.velocity[d] = vs[d];
+        ENSURE_EQ_INT(motus_step(&scene, &state, (motus_real)h, NULL, 0), MOTUS_OK);
+        for (d = 0; d < dims; ++d) {
+            const double v_expected = g[d] / k, x_expected = (double)(motus_real)v0[d] / k + g[d] * (h - 1 / k) / k;
+            ENSURE(motus_real_is_finite(vs[d][0]) && motus_real_is_finite(xs[d][0]));
+            if (v_expected == 0) ENSURE(vs[d][0] == 0);
+            else ENSURE_NEAR((double)vs[d][0] / v_expected, 1, 1e-5);
+            ENSURE_NEAR((double)xs[d][0] / x_expected, 1, 1e-5);
+        }
+    }
+}
+
+TEST(spring_of_1e20_at_its_rest_length_of_1e20) {
+    /* (e) Stiffness = rest length = 1e20, the ends 1e20 m apart on an axis: the length must not be formed as
+       sqrt(d^2) (1e40 overflows float); the force is exactly 0, the step MOTUS_OK, nothing moves. Between two
+       particles and to an anchor; 2D and 3D; with spring damping. */
+    static const motus_method methods[3] = {MOTUS_SEMI_IMPLICIT_EULER, MOTUS_LEAPFROG, MOTUS_RK4};
+    int m, dims, anchored;
+    for (dims = 2; dims <= 3; ++dims)
+        for (anchored = 0; anchored < 2; ++anchored)
+            for (m = 0; m < 3; ++m) {
+                const motus_real L = (motus_real)1e20;
+                motus_real x[2] = {0, 0}, y[2] = {0, 0}, z[2] = {0, 0}, vx[2] = {0, 0}, vy[2] = {0, 0}, vz[2] = {0, 0};
+                motus_real scratch[64];
+                motus_spring spring;
+                motus_scene scene;
+                motus_state state;
+                memset(&scene, 0, sizeof scene);
+                memset(&state, 0, sizeof state);
+                memset(&spring, 0, sizeof spring);
+                scene.method = methods[m];
+                spring.a = 0;
+                spring.b = anchored ? -1 : 1;
+                spring.stiffness = L;
+                spring.rest_length = L;
+                spring.damping = 3;
+                if (dims == 3) z[1] = L, spring.anchor = motus_v3(0, 0, L);
+                else y[1] = -L, spring.anchor = motus_v3(0, -L, 0);
+                scene.springs = &spring;
+                scene.spring_count = 1;
+                state.dimensions = dims;
+                state.count = 2;
+                state.position[0] = x, state.position[1] = y, state.position[2] = z;
+                state.velocity[0] = vx, state.velocity[1] = vy, state.velocity[2] = vz;
+                ENSURE(motus_scratch_size(&scene, &state) <= sizeof scratch);
+                ENSURE_EQ_INT(motus_step(&scene, &state, MOTUS_R(0.5), scratch, sizeof scratch), MOTUS_OK);
+                ENSURE(vx[0] == 0 && vy[0] == 0 && vz[0] == 0 && vx[1] == 0 && vy[1] == 0 && vz[1] == 0);
+                ENSURE(x[0] == 0 && y[0] == 0 && z[0] == 0);
+                ENSURE(dims == 3 ? z[1] == L : y[1] == -L);
+            }
+}
+
+TEST(subnormal_dt_in_substeps_still_moves) {
+    /* (f) dt of one or three of the smallest subnormals, split in 4 substeps: dt/4 rounds to 0, which would
+       step nothing. The step must still move a moving particle (fewer substeps), for every method.
+       HEADER BUG: position Verlet and RK4 still do not move: motus__job_init keeps dt/n > 0, but their
+       drifts use h/2 (position Verlet: x += v*h/2 twice) and h/6 (RK4's final x += (...)*h/6), which
+       round to 0 at h = the smallest subnormal, so x stays 0 (semi-implicit Euler, the other Verlets,
+       midpoint, Forest-Ruth and the exact stepper move). */
+    const motus_real dts[2] = {REAL_TRUE_MIN, 3 * REAL_TRUE_MIN};
+    int m, i;
+    for (m = 0; m < MOTUS_METHOD_COUNT; ++m)
+        for (i = 0; i < 2; ++i) {
+            motus_real x[2] = {0, 0}, y[2] = {0, 0}, vx[2] = {1, -1}, vy[2] = {0, 2};
+            motus_scene scene;
+            motus_state state;
+            int n = 0;
+            memset(&scene, 0, sizeof scene);
+            memset(&state, 0, sizeof state);
+            scene.method = (motus_method)m;
+            scene.substeps = 4;
+            state.count = 2;
+            state.position[0] = x, state.position[1] = y;
+            state.velocity[0] = vx, state.velocity[1] = vy;
+            ENSURE_EQ_INT(motus_step(&scene, &state, dts[i], NULL, 0), MOTUS_OK);
+            if (!(x[0] > 0 && x[1] < 0 && y[1] > 0)) {
+                fprintf(stderr, "  %s, dt %g in 4 substeps: did not move (x %g, %g)\n",
+                        motus_method_name((motus_method)m), (double)dts[i], (double)x[0], (double)x[1]);
+                motus_test_failures++;
+            }
+            ENSURE(x[0] <= 4 * dts[i]); /* no more than a few of the substeps it could take */
+            /* motus_substeps_for agrees: dt/n is not 0. */
+            ENSURE_EQ_INT(motus_substeps_for(dts[i], REAL_TRUE_MIN, 1, &n), MOTUS_OK);
+            ENSURE(n >= 1 && dts[i] / (motus_real)n > 0);
+        }
+}
+
+TEST(scene_max_stable_dt_needs_scratch_for_springs) {
+    /* (g) Springs and no scratch (NULL, too small, misaligned): MOTUS_ERROR_SCRATCH_TOO_SMALL, nothing
+       written (not *max_dt, not the scratch). Without springs no scratch is needed. */
+    motus_real x[3] = {0, 1, 2}, y[3] = {0, 0, 0}, vx[3] = {0, 0, 0}, vy[3] = {0, 0, 0};
+    motus_real scratch[16], scratch_before[16];
+    motus_spring springs[2];
+    motus_scene scene;
+    motus_state state;
+    motus_real max_dt = -3;
+    int i;
+    memset(&scene, 0, sizeof scene);
+    memset(&state, 0, sizeof state);
+    memset(springs, 0, sizeof springs);
+    springs[0].a = 0, springs[0].b = 1, springs[0].stiffness = 100;
+    springs[1].a = 2, springs[1].b = -1, springs[1].stiffness = 400;
+    scene.springs = springs;
+    scene.spring_count = 2;
+    state.count = 3;
+    state.position[0] = x, state.position[1] = y;
+    state.velocity[0] = vx, state.velocity[1] = vy;
+    for (i = 0; i < 16; ++i) scratch[i] = scratch_before[i] = (motus_real)(i * 3 + 1);
+    ENSURE_EQ_INT(motus_scene_max_stable_dt(&scene, &state, &max_dt, NULL, 0), MOTUS_ERROR_SCRATCH_TOO_SMALL);
+    ENSURE_EQ_INT(motus_scene_max_stable_dt(&scene, &state, &max_dt, NULL, 1 << 20), MOTUS_ERROR_SCRATCH_TOO_SMALL);
+    ENSURE_EQ_INT(motus_scene_max_stable_dt(&scene, &state, &max_dt, scratch, 6 * sizeof(motus_real) - 1),
+                  MOTUS_ERROR_SCRATCH_TOO_SMALL);
+    ENSURE_EQ_INT(motus_scene_max_stable_dt(&scene, &state, &max_dt, (char *)scratch + 1, sizeof scratch - 1),
+                  MOTUS_ERROR_SCRATCH_TOO_SMALL);
+    ENSURE(max_dt == -3);
+    ENSURE(same_bytes(scratch, scratch_before, sizeof scratch));
+    /* Enough scratch: 2*sqrt(m/k) with k = 400 on 1 kg (the anchored spring): 0.1 s; the pair 100*(1 + 1). */
+    ENSURE_EQ_INT(motus_scene_max_stable_dt(&scene, &state, &max_dt, scratch, 6 * sizeof(motus_real)), MOTUS_OK);
+    ENSURE_NEAR(max_dt, 0.1, 8 * MOTUS_REAL_EPSILON);
+    scene.spring_count = 0;
+    max_dt = -3;
+    ENSURE_EQ_INT(motus_scene_max_stable_dt(&scene, &state, &max_dt, NULL, 0), MOTUS_OK);
+    ENSURE(max_dt == infinity());
 }
 
 static const motus_test_case TESTS[] = {
     TEST_CASE(far_from_origin_plain_step_loses_small_steps),
     TEST_CASE(far_from_origin_compensated_step_keeps_small_steps),
+    TEST_CASE(far_from_origin_compensated_step_3d),
     TEST_CASE(compensated_step_is_the_plain_step_near_the_origin),
     TEST_CASE(compensated_step_rejects_bad_input),
     TEST_CASE(particle_step_overflow_near_max),
-    TEST_CASE(stepper_overflow_near_max_one_method_per_family),
-    TEST_CASE(batch_overflow_near_max_is_reported),
+    TEST_CASE(step_overflow_near_max_one_method_per_family),
     TEST_CASE(damping_factors_accepted_or_rejected_as_documented),
     TEST_CASE(rest_speed_keeps_v_dt_normal),
     TEST_CASE(damping_flushes_to_exact_zero_at_the_rest_speed),
     TEST_CASE(damping_reaches_exact_zero_without_subnormals),
-    TEST_CASE(batch_damping_reaches_exact_zero_as_the_particle_path),
-    TEST_CASE(batch_without_damping_does_not_flush),
+    TEST_CASE(scene_damping_reaches_exact_zero_as_the_particle_path),
+    TEST_CASE(scene_without_damping_does_not_flush),
+    TEST_CASE(substeps_for_a_stable_dt_of_negative_zero_is_too_stiff),
+    TEST_CASE(attractor_pull_far_away_is_representable),
+    TEST_CASE(exact_stepper_at_huge_drag_and_dt),
+    TEST_CASE(spring_of_1e20_at_its_rest_length_of_1e20),
+    TEST_CASE(subnormal_dt_in_substeps_still_moves),
+    TEST_CASE(scene_max_stable_dt_needs_scratch_for_springs),
 };
 
 int main(int argc, char **argv) { return motus_test_main(argc, argv, TESTS, TEST_COUNT(TESTS)); }
