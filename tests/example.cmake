@@ -27,9 +27,10 @@ if(TARGET orbits)
   endforeach()
 endif()
 # The sandbox example: headless runs with gravity and wind on and off, checked on their printed means and on
-# the screenshot's colours; and G, W, R, D held as real keys, each checked to flip its switch and scene.has.
+# the screenshot's colours, and under each method; and G, W, K, D, M, R held as real keys, each checked to
+# change its switch (and the printed scene), the method or reset.
 if(TARGET sandbox)
-  foreach(mode headless key_g key_w key_r key_d)
+  foreach(mode headless methods key_g key_w key_k key_d key_m key_r)
     add_test(NAME example.sandbox_${mode}
       COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/example_sandbox.sh" $<TARGET_FILE:sandbox> ${mode}
               "${CMAKE_CURRENT_BINARY_DIR}/example")
