@@ -3,11 +3,11 @@ if(NOT TARGET wsad)
   message(STATUS "motus: example tests skipped (no raylib, or MOTUS_BUILD_EXAMPLES=OFF)")
   return()
 endif()
-# motus_vec2 against the real raylib.h (tests/unit.c checks a copy of the declaration everywhere).
+# motus_vec2 and motus_vec3 against the real raylib.h (tests/unit.c checks a copy of the declaration everywhere).
 motus_test_program(motus_raylib_layout raylib_layout.c)
 target_link_libraries(motus_raylib_layout PRIVATE motus::raylib)
-add_test(NAME unit.raylib_vector2_layout COMMAND motus_raylib_layout)
-set_tests_properties(unit.raylib_vector2_layout PROPERTIES LABELS unit)
+add_test(NAME unit.raylib_vector_layout COMMAND motus_raylib_layout)
+set_tests_properties(unit.raylib_vector_layout PROPERTIES LABELS unit)
 
 # Each key held for a second must move the particle its way; the script reads the printed final state.
 foreach(key w a s d)
