@@ -1,8 +1,9 @@
 /* orbits.c - one orbit integrated by five motus methods side by side, with their errors and their cost.
 
-   An 800x600 window at 60 FPS. The eccentric Kepler orbit of bench/problems.h (kepler_eccentric: mu = 1,
-   a = 1, e = 0.5, period T = 2 pi, starting at periapsis) is integrated once per method, each particle under
-   the same motus_forces (attractor_strength = mu at the origin) and with the same step. The hollow white
+   An 800x600 window at 60 FPS. The eccentric Kepler orbit (mu = 1, a = 1, e = 0.5, period T = 2 pi, starting
+   at periapsis; bench/problems.h's kepler_eccentric) is integrated once per method: one motus_scene with an
+   attractor (attractor_strength = mu at the origin), its scene.method set to each method in turn, and
+   motus_step on each method's particle with the same step. The hollow white
    circle is the exact position, from Kepler's equation. Every frame each method takes one step of
    dt = T/120 of simulated time, so an orbit takes two seconds on screen, whatever the frame rate.
 
@@ -27,10 +28,10 @@
      --screenshot FILE  save the last frame as a PNG
    On exit it prints the run (frames; steps and simulated time since the start or the last R; whether it ended
    paused) and one line per method with its final errors, its drawing colour and its measured cost, e.g.
-     method=rk4 order=4 evals=4 position_error=3.138e-03 energy_error=-5.970e-05 us_per_step=0.080 rgb=102,191,255
+     method=rk4 order=4 evals=4 position_error=3.095e-03 energy_error=-5.980e-05 us_per_step=0.263 rgb=102,191,255
    us_per_step is a measurement (it varies from run to run); every other number is reproducible. */
+#define MOTUS_IMPLEMENTATION /* this file compiles the engine: motus_step */
 #include "motus.h"
-#include "problems.h" /* bench/: the orbit, its exact state and its energy */
 #include "raylib.h"
 
 #include <math.h>
@@ -40,13 +41,14 @@
 
 #define WINDOW_WIDTH 800
 #define WINDOW_HEIGHT 600
-#define KEPLER_PERIOD (2 * PROBLEM_PI) /* a = 1, mu = 1: T = 2 pi sqrt(a^3/mu) */
+#define ORBIT_PI 3.14159265358979323846
+#define ECCENTRICITY 0.5
+#define KEPLER_PERIOD (2 * ORBIT_PI) /* a = 1, mu = 1: T = 2 pi sqrt(a^3/mu) */
 #define DEFAULT_STEPS_PER_ORBIT 120    /* dt = T/120: an orbit in 120 frames, 2 s at 60 FPS */
 #define MIN_STEPS_PER_ORBIT 15
 #define MAX_STEPS_PER_ORBIT 1920
 #define TRAIL_LENGTH 90     /* steps of trail kept per method */
 #define TIMING_REPEATS 32   /* steps timed together, so the clock's own cost is small against theirs */
-#define SCRATCH_VECTORS 16  /* per stepper: more than any method here needs for one particle */
 
 /* Layout. The orbit is drawn between the top bar and the legend; tests/example_orbits.sh looks for each
    method's colour above LEGEND_TOP. */
@@ -54,7 +56,7 @@
 #define LEGEND_TOP 446
 #define PIXELS_PER_UNIT 200.0f
 /* The ellipse's centre is at x = -a*e, so the attractor (a focus) sits right of the view's centre. */
-#define ATTRACTOR_X (WINDOW_WIDTH / 2 + PIXELS_PER_UNIT * (float)PROBLEM_ECCENTRICITY)
+#define ATTRACTOR_X (WINDOW_WIDTH / 2 + PIXELS_PER_UNIT * (float)ECCENTRICITY)
 #define ATTRACTOR_Y ((TOP_BAR_HEIGHT + LEGEND_TOP) / 2)
 
 #define BACKGROUND CLITERAL(Color){12, 12, 18, 255}
@@ -81,8 +83,6 @@ static const method_style STYLES[] = {
 typedef struct orbiter {
     const method_style *style;
     motus_particle particle;
-    motus_stepper stepper;
-    motus_stepper timing_stepper; /* steps a throwaway copy of the particle to measure the cost */
     motus_vec2 trail[TRAIL_LENGTH]; /* ring buffer, newest at trail_head - 1 */
     int trail_head, trail_count;
     double us_per_step; /* moving average of the measured time per step */
@@ -90,7 +90,7 @@ typedef struct orbiter {
 } orbiter;
 
 typedef struct simulation {
-    problem kepler;
+    motus_scene scene; /* the attractor; scene.method is set to each orbiter's method before its step */
     double start_energy;
     orbiter orbiters[METHOD_COUNT];
     int steps_per_orbit; /* dt = T/steps_per_orbit */
@@ -100,9 +100,36 @@ typedef struct simulation {
     long paused_frames;
 } simulation;
 
-/* No malloc: each stepper gets its memory from here. motus_stepper_init compares it with
-   motus_stepper_scratch_size(method, 1) and says MOTUS_ERROR_SCRATCH_TOO_SMALL if it is not enough. */
-static motus_vec2 scratch_memory[METHOD_COUNT][2][SCRATCH_VECTORS];
+/* ---- the orbit: a = 1, e = 0.5, mu = 1, from periapsis (0.5, 0) moving +y; everything in double ---- */
+typedef struct orbit_state {
+    double x, y, vx, vy;
+} orbit_state;
+
+/* The exact state at time t: mean anomaly M = t (mean motion 1), Kepler's equation E - e sin E = M solved by
+   Newton's method to rounding. */
+static orbit_state kepler_exact(double t) {
+    const double e = ECCENTRICITY, b = sqrt(1 - e * e), m = fmod(t, 2 * ORBIT_PI);
+    double E = m, r;
+    int i;
+    orbit_state s;
+    for (i = 0; i < 50; ++i) {
+        const double step = (E - e * sin(E) - m) / (1 - e * cos(E));
+        E -= step;
+        if (fabs(step) < 1e-16) break;
+    }
+    r = 1 - e * cos(E);
+    s.x = cos(E) - e;
+    s.y = b * sin(E);
+    s.vx = -sin(E) / r; /* dE/dt = 1/r */
+    s.vy = b * cos(E) / r;
+    return s;
+}
+
+/* Energy per unit mass, kinetic + potential (-mu/r); -1/2 on this orbit. */
+static double kepler_energy(const motus_particle *p) {
+    const double x = p->position.x, y = p->position.y, vx = p->velocity.x, vy = p->velocity.y;
+    return 0.5 * (vx * vx + vy * vy) - 1.0 / sqrt(x * x + y * y);
+}
 
 typedef struct options {
     long frames; /* 0: no limit */
@@ -136,63 +163,58 @@ static const char *method_name(motus_method method) {
 
 static motus_real step_size(const simulation *sim) { return (motus_real)(KEPLER_PERIOD / sim->steps_per_orbit); }
 
-static motus_stepper_desc stepper_desc(motus_method method, motus_vec2 *memory) {
-    motus_stepper_desc desc;
-    memset(&desc, 0, sizeof desc);
-    desc.capacity = 1;
-    desc.method = method;
-    desc.scratch = memory;
-    desc.scratch_bytes = sizeof(motus_vec2) * SCRATCH_VECTORS;
-    return desc;
-}
-
 /* Every particle back at periapsis, trails and clock cleared; the step is kept. */
 static int simulation_reset(simulation *sim) {
+    const orbit_state start = kepler_exact(0);
+    motus_check_report report;
+    motus_result result;
     int i;
     sim->time = 0;
     sim->steps = 0;
     for (i = 0; i < METHOD_COUNT; ++i) {
         orbiter *o = &sim->orbiters[i];
-        motus_stepper_desc desc = stepper_desc(STYLES[i].method, scratch_memory[i][0]);
-        motus_stepper_desc timing = stepper_desc(STYLES[i].method, scratch_memory[i][1]);
-        motus_result result;
         o->style = &STYLES[i];
-        o->particle = problem_particle(&sim->kepler);
+        motus_particle_init(&o->particle, motus_v2((motus_real)start.x, (motus_real)start.y), 1);
+        o->particle.velocity = motus_v2((motus_real)start.vx, (motus_real)start.vy);
         o->trail_head = o->trail_count = 0;
         o->last_result = MOTUS_OK;
-        result = motus_stepper_init(&o->stepper, &desc);
-        if (result == MOTUS_OK) result = motus_stepper_init(&o->timing_stepper, &timing);
-        if (result != MOTUS_OK) {
-            fprintf(stderr, "orbits: %s: %s\n", method_name(STYLES[i].method), motus_result_string(result));
-            return 0;
-        }
+    }
+    result = motus_scene_check(&sim->scene, 2, 1, &report);
+    if (result != MOTUS_OK) {
+        fprintf(stderr, "orbits: %s: %s\n", report.field_name, motus_result_string(result));
+        return 0;
     }
     /* The energy of the particle as stored (in motus_real), so that the error shown is what the method
        changed, not the rounding of the starting state. */
-    sim->start_energy = sim->kepler.energy(problem_state_of(&sim->orbiters[0].particle));
+    sim->start_energy = kepler_energy(&sim->orbiters[0].particle);
     return 1;
 }
 
 static int simulation_init(simulation *sim) {
     memset(sim, 0, sizeof *sim);
-    problem_get(PROBLEM_KEPLER_ECCENTRIC, &sim->kepler);
+    sim->scene.attractor = motus_v3(0, 0, 0);
+    sim->scene.attractor_strength = 1; /* mu */
     sim->steps_per_orbit = DEFAULT_STEPS_PER_ORBIT;
     return simulation_reset(sim);
 }
 
-static void orbiter_step(orbiter *o, const motus_forces *forces, motus_real dt) {
+/* One step of the orbiter's method: the shared scene with its method, over a state of its one particle. */
+static void orbiter_step(orbiter *o, motus_scene *scene, motus_real dt) {
     motus_particle copy = o->particle;
+    const motus_state state = motus_state_of_particles(&o->particle, 1);
+    const motus_state timing_state = motus_state_of_particles(&copy, 1);
     double start, measured;
     int k;
     motus_result result;
 
+    scene->method = o->style->method;
     /* The cost: the same step on a copy, TIMING_REPEATS times between two clock readings. */
     start = GetTime();
-    for (k = 0; k < TIMING_REPEATS; ++k) motus_stepper_step(&o->timing_stepper, &copy, 1, forces, dt);
+    for (k = 0; k < TIMING_REPEATS; ++k) motus_step(scene, &timing_state, dt, NULL, 0);
     measured = (GetTime() - start) * 1e6 / TIMING_REPEATS;
     o->us_per_step = o->us_per_step == 0 ? measured : o->us_per_step + 0.05 * (measured - o->us_per_step);
 
-    result = motus_stepper_step(&o->stepper, &o->particle, 1, forces, dt);
+    result = motus_step(scene, &state, dt, NULL, 0);
     if (result != MOTUS_OK && result != o->last_result) /* say it once, not every frame */
         fprintf(stderr, "orbits: %s: %s\n", method_name(o->style->method), motus_result_string(result));
     o->last_result = result;
@@ -205,21 +227,21 @@ static void orbiter_step(orbiter *o, const motus_forces *forces, motus_real dt) 
 static void simulation_step(simulation *sim) {
     const motus_real dt = step_size(sim);
     int i;
-    for (i = 0; i < METHOD_COUNT; ++i) orbiter_step(&sim->orbiters[i], &sim->kepler.forces, dt);
+    for (i = 0; i < METHOD_COUNT; ++i) orbiter_step(&sim->orbiters[i], &sim->scene, dt);
     sim->time += (double)dt;
     ++sim->steps;
 }
 
-static problem_state exact_state(const simulation *sim) { return sim->kepler.exact(sim->time); }
+static orbit_state exact_state(const simulation *sim) { return kepler_exact(sim->time); }
 
 static double position_error(const simulation *sim, const orbiter *o) {
-    problem_state exact = exact_state(sim);
+    orbit_state exact = exact_state(sim);
     return hypot((double)o->particle.position.x - exact.x, (double)o->particle.position.y - exact.y);
 }
 
 /* (E - E0)/|E0|: positive when the method added energy. */
 static double energy_error(const simulation *sim, const orbiter *o) {
-    return (sim->kepler.energy(problem_state_of(&o->particle)) - sim->start_energy) / fabs(sim->start_energy);
+    return (kepler_energy(&o->particle) - sim->start_energy) / fabs(sim->start_energy);
 }
 
 static void handle_keys(simulation *sim) {
@@ -273,13 +295,13 @@ static void draw_off_view_marker(Vector2 p, double distance, Color colour) {
 }
 
 static void draw_orbits(const simulation *sim) {
-    const problem_state exact = exact_state(sim);
+    const orbit_state exact = exact_state(sim);
     const Vector2 attractor = to_screen(0, 0);
     int i, j;
 
     /* The exact orbit, faintly: an ellipse with semi-axes a and b = a*sqrt(1 - e^2), centred at (-a*e, 0). */
-    DrawEllipseLinesV(to_screen(-PROBLEM_ECCENTRICITY, 0), PIXELS_PER_UNIT,
-                      PIXELS_PER_UNIT * (float)sqrt(1 - PROBLEM_ECCENTRICITY * PROBLEM_ECCENTRICITY), RULE);
+    DrawEllipseLinesV(to_screen(-ECCENTRICITY, 0), PIXELS_PER_UNIT,
+                      PIXELS_PER_UNIT * (float)sqrt(1 - ECCENTRICITY * ECCENTRICITY), RULE);
     DrawCircleV(attractor, 13, ColorAlpha(CLITERAL(Color){255, 236, 170, 255}, 0.18f));
     DrawCircleV(attractor, 7, CLITERAL(Color){255, 236, 170, 255});
 
@@ -335,7 +357,7 @@ static void draw_legend(const simulation *sim) {
         DrawCircle(NAME - 18, y + 9, 6, o->style->colour);
         DrawText(method_name(m), NAME, y, 20, o->style->colour);
         DrawText(TextFormat("%d", motus_method_order(m)), ORDER + 10, y, 20, TEXT_BRIGHT);
-        DrawText(TextFormat("%d", motus_method_evaluations(m, 0)), EVALS + 20, y, 20, TEXT_BRIGHT);
+        DrawText(TextFormat("%d", motus_method_evaluations(m)), EVALS + 20, y, 20, TEXT_BRIGHT);
         DrawText(TextFormat("%.1e", position_error(sim, o)), POSITION, y, 20, TEXT_BRIGHT);
         DrawText(TextFormat("%+.1e", energy_error(sim, o)), ENERGY, y, 20, TEXT_BRIGHT);
         DrawText(TextFormat("%.3f", o->us_per_step), COST, y, 20, TEXT_BRIGHT);
@@ -405,7 +427,7 @@ int main(int argc, char **argv) {
         const orbiter *o = &sim.orbiters[i];
         const motus_method m = o->style->method;
         printf("method=%s order=%d evals=%d position_error=%.3e energy_error=%.3e us_per_step=%.3f rgb=%d,%d,%d\n",
-               method_name(m), motus_method_order(m), motus_method_evaluations(m, 0), position_error(&sim, o),
+               method_name(m), motus_method_order(m), motus_method_evaluations(m), position_error(&sim, o),
                energy_error(&sim, o), o->us_per_step, o->style->colour.r, o->style->colour.g, o->style->colour.b);
     }
     return 0;

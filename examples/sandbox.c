@@ -1,35 +1,37 @@
-/* sandbox.c - thousands of coloured particles stepped by motus's batch kernels, with gravity, wind and
-   damping you switch on and off.
+/* sandbox.c - thousands of coloured particles stepped by motus_step, with gravity, wind, random kicks and
+   damping you switch on and off, and any of motus's integrators.
 
    The reference program's follow-up ideas ("add more particles and draw each with a different colour, and
    let them move randomly"; "collisions at the edges of the screen"; "add gravity to let particles fall and
-   wind that blows particles to the side"), written with motus_batch_step: an 800x600 window at 60 FPS and
-   5000 particles (--particles N) in static arrays, one array per component (x[], y[], vx[], vy[], ...).
-   Each particle has its own colour, a mass between 0.5 and 2 (drawn as its size) and starts at a random
-   place with a random velocity; a small seeded generator of this file makes the start and the random kicks,
-   so a run with the same options is the same run. One unit of length is one pixel; y grows downwards.
+   wind that blows particles to the side"), written with motus_step: an 800x600 window at 60 FPS and
+   5000 particles (--particles N) in static arrays, one array per component (x[], y[], vx[], vy[], ...),
+   handed to motus as a motus_state. Each particle has its own colour, a mass between 0.5 and 2 (drawn as
+   its size) and starts at a random place with a random velocity; a small seeded generator of this file
+   makes the start and the random kicks, so a run with the same options is the same run. One unit of length
+   is one pixel; y grows downwards.
 
-   Every frame the scene description (motus_scene.has) is rebuilt from what is switched on, and motus picks
-   its kernel from exactly that:
-     G  gravity, 300 px/s^2 down             MOTUS_HAS_GRAVITY (scene.gravity)
-     W  wind, a force of 200 N to the right   MOTUS_HAS_FORCES (the force arrays): a force, not an
-                                              acceleration, so light particles blow away faster than heavy
-                                              ones, while gravity pulls every one alike
-     R  random kicks, up to 400 N each way    MOTUS_HAS_FORCES too: a new random force every frame
-     D  damping, 50% of the speed kept per    MOTUS_HAS_DAMPING_PER_SECOND (scene.damping)
-        second
-   and always: each particle's own mass (MOTUS_HAS_PARTICLE_MASS) and the window's edges, where particles
-   bounce and keep 90% of their speed (MOTUS_HAS_BOUNDS, scene.restitution). With neither wind nor kicks the
-   force arrays are not filled and the kernel does not read them: each combination of these switches has
-   its own kernel in motus.h (see "Batch kernels"). The HUD lights the MOTUS_HAS_* flags that are on and shows the time the one
-   motus_batch_step call for all particles took each frame, measured here on this machine (a moving average;
-   a timing, not a property of motus; with few particles it is mostly the cost of a call made once a frame,
-   between drawings, with cold caches).
+   Every frame the motus_scene (and the state's force array) is rebuilt from what is switched on; a term
+   left zero costs nothing:
+     G  gravity, 300 px/s^2 down             scene.gravity
+     W  wind, a force of 200 N to the right   state.force (the force arrays): a force, not an acceleration,
+                                              so light particles blow away faster than heavy ones, while
+                                              gravity pulls every one alike
+     K  random kicks, up to 400 N each way    state.force too: a new random force every frame
+     D  damping, 50% of the speed removed     scene.damping_per_second
+        per second
+     M  the next integrator                   scene.method (semi-implicit Euler first; all nine take this scene)
+     R  reset: every particle back where it started (the same seeded start)
+   and always: each particle's own mass (state.inverse_mass) and the window's edges, where particles bounce
+   and keep 90% of their speed (scene.bounds_min/max, scene.restitution). With neither wind nor kicks
+   state.force is NULL and the force arrays are not read. The HUD lights the scene's terms that are on, names
+   the method and shows the time the one motus_step call for all particles took each frame, measured here on
+   this machine (a moving average; a timing, not a property of motus; with few particles it is mostly the
+   cost of a call made once a frame, between drawings, with cold caches).
 
    The step is a fixed dt = 1/60 s per frame, whatever the measured frame time: the motion depends on the
    number of frames only, so a run under a virtual X server (Xvfb), slow or not, ends where a real one does.
 
-   Keys: G, W, R, D toggle (see above); Escape quits.
+   Keys: G, W, K, D toggle, M cycles the method, R resets (see above); Escape quits.
    Options, so that a script can drive it without a person (defaults: the interactive program):
      --frames N            stop after N frames (default: run until the window is closed or Escape)
      --particles N         how many, 1 to 65536 (default 5000)
@@ -38,13 +40,16 @@
      --wind on|off
      --random on|off
      --damping on|off
+     --method NAME         the first method, by motus_method_name ("rk4"; default semi_implicit_euler)
      --screenshot FILE     save the last frame as a PNG
-   On exit it prints one line: the scene it ended with, how many key presses toggled something, how many
-   particles are inside the window (all of them: they bounce) and their mean position and velocity, e.g.
-     frames=300 particles=5000 has=GRAVITY|PARTICLE_MASS|FORCES|BOUNDS gravity=1 wind=0 random=1 damping=0
-     toggles=0 inside=5000 mean_x=396.696 mean_y=484.959 mean_vx=0.612 mean_vy=13.280 us_per_step=40.523
+   On exit it prints one line: the scene it ended with (its terms that are on, and the method), how many key
+   presses changed something, how many resets and steps since the last, how many particles are inside the
+   window (all of them: they bounce) and their mean position and velocity, e.g.
+     frames=300 particles=5000 scene=gravity|bounds|state.force|state.inverse_mass method=semi_implicit_euler
+     gravity=1 wind=0 random=1 damping=0 toggles=0 resets=0 steps=300 inside=5000 mean_x=... us_per_step=40.5
    (one line). us_per_step is a measurement; every other number is the same on every run with the same
    options. */
+#define MOTUS_IMPLEMENTATION /* this file compiles the engine: motus_step */
 #include "motus.h"
 #include "raylib.h"
 
@@ -60,7 +65,7 @@
 #define GRAVITY 300.0f           /* px/s^2, down */
 #define WIND 200.0f              /* N to the right, on every particle */
 #define KICK 400.0f              /* N: each random kick's components are uniform in [-KICK, KICK] */
-#define DAMPING_PER_SECOND 0.5f  /* speed kept per second when damping is on */
+#define DAMPING_PER_SECOND 0.5f  /* fraction of the speed removed per second when damping is on */
 #define RESTITUTION 0.9f         /* speed kept through a bounce */
 #define MIN_MASS 0.5f
 #define MAX_MASS 2.0f
@@ -73,7 +78,7 @@
 
 /* Layout: translucent bars over the particles. */
 #define TOP_BAR_HEIGHT 84
-#define FLAGS_TOP 48    /* the MOTUS_HAS_* grid: two rows of five columns */
+#define FLAGS_TOP 48    /* the scene's terms: two rows of five columns */
 #define FLAG_ROW 18
 #define FLAG_LEFT 96
 #define FLAG_COLUMN 140
@@ -87,15 +92,15 @@
 #define LIT CLITERAL(Color){120, 235, 140, 255}
 #define LIT_BACK CLITERAL(Color){30, 72, 42, 255}
 
-/* Cache-line aligned: the kernels take any alignment (they peel to a vector boundary), this only spares
-   them the peel. GCC and Clang spelling; C99 has no _Alignas. */
+/* Cache-line aligned: motus takes any alignment; this only spares its kernels the unaligned loads at the
+   start. GCC and Clang spelling; C99 has no _Alignas. */
 #if defined(__GNUC__) || defined(__clang__)
 #define ALIGNED64 __attribute__((aligned(64)))
 #else
 #define ALIGNED64
 #endif
 
-/* The particles: one array per component, as motus_batch wants them. */
+/* The particles: one array per component (a motus_state points into them). */
 static float position_x[MAX_PARTICLES] ALIGNED64, position_y[MAX_PARTICLES] ALIGNED64;
 static float velocity_x[MAX_PARTICLES] ALIGNED64, velocity_y[MAX_PARTICLES] ALIGNED64;
 static float force_x[MAX_PARTICLES] ALIGNED64, force_y[MAX_PARTICLES] ALIGNED64;
@@ -105,7 +110,8 @@ static Color colour[MAX_PARTICLES];
 
 typedef struct toggles {
     int gravity, wind, random, damping;
-    long presses; /* key presses that toggled something */
+    motus_method method;
+    long presses; /* key presses that changed something (R included) */
 } toggles;
 
 typedef struct options {
@@ -118,11 +124,13 @@ typedef struct options {
 
 typedef struct sandbox {
     int count;
+    unsigned long seed;
     toggles on;
     motus_scene scene; /* rebuilt from `on` every frame */
-    motus_batch batch;
-    double us_per_step; /* moving average of the measured motus_batch_step time */
+    motus_state state; /* the arrays; state.force set only while a force is on */
+    double us_per_step; /* moving average of the measured motus_step time */
     long steps_timed;
+    long resets, steps; /* steps: since the start or the last reset */
     motus_result last_result;
     unsigned long long random_state;
     Texture2D dot; /* a white disc with a soft edge, tinted per particle */
@@ -162,6 +170,7 @@ static int parse_options(int argc, char **argv, options *out) {
     out->particles = DEFAULT_PARTICLES;
     out->seed = 1;
     out->start.random = 1;
+    out->start.method = MOTUS_SEMI_IMPLICIT_EULER;
     for (i = 1; i < argc; ++i) {
         const char *name = argv[i], *value = i + 1 < argc ? argv[i + 1] : NULL;
         char *end;
@@ -179,6 +188,11 @@ static int parse_options(int argc, char **argv, options *out) {
             if (*end != '\0') return 0;
         } else if (strcmp(name, "--screenshot") == 0) {
             out->screenshot = value;
+        } else if (strcmp(name, "--method") == 0) {
+            int m;
+            for (m = 0; m < MOTUS_METHOD_COUNT && strcmp(motus_method_name((motus_method)m), value) != 0; ++m) {}
+            if (m == MOTUS_METHOD_COUNT) return 0;
+            out->start.method = (motus_method)m;
         } else if (!((strcmp(name, "--gravity") == 0 && parse_switch(value, &out->start.gravity)) ||
                      (strcmp(name, "--wind") == 0 && parse_switch(value, &out->start.wind)) ||
                      (strcmp(name, "--random") == 0 && parse_switch(value, &out->start.random)) ||
@@ -190,13 +204,10 @@ static int parse_options(int argc, char **argv, options *out) {
 }
 
 /* ---- the simulation ------------------------------------------------------------------------------- */
-static void sandbox_init(sandbox *s, const options *opts) {
+/* Every particle at its seeded start: the same places, velocities, masses and colours on every reset. */
+static void sandbox_place(sandbox *s) {
     int i;
-    memset(s, 0, sizeof *s);
-    s->count = opts->particles;
-    s->on = opts->start;
-    s->on.presses = 0;
-    random_seed(&s->random_state, opts->seed);
+    random_seed(&s->random_state, s->seed);
     for (i = 0; i < s->count; ++i) {
         const float mass = random_range(&s->random_state, MIN_MASS, MAX_MASS);
         position_x[i] = random_range(&s->random_state, MAX_RADIUS, WINDOW_WIDTH - MAX_RADIUS);
@@ -209,35 +220,47 @@ static void sandbox_init(sandbox *s, const options *opts) {
         colour[i] = ColorFromHSV(random_range(&s->random_state, 0, 360), random_range(&s->random_state, 0.55f, 0.9f),
                                  1.0f);
     }
-    s->batch.dimensions = 2;
-    s->batch.position[0] = position_x;
-    s->batch.position[1] = position_y;
-    s->batch.velocity[0] = velocity_x;
-    s->batch.velocity[1] = velocity_y;
-    s->batch.force[0] = force_x;
-    s->batch.force[1] = force_y;
-    s->batch.inverse_mass = inverse_mass;
+    s->steps = 0;
 }
 
-/* The scene as the toggles say: every flag set is work that is on, every flag not set is work not done. */
+static void sandbox_init(sandbox *s, const options *opts) {
+    memset(s, 0, sizeof *s);
+    s->count = opts->particles;
+    s->seed = opts->seed;
+    s->on = opts->start;
+    s->on.presses = 0;
+    sandbox_place(s);
+}
+
+/* The scene as the toggles say: a term left zero is work not done. */
 static motus_scene scene_from(const toggles *on) {
     motus_scene scene;
-    memset(&scene, 0, sizeof scene); /* method 0: semi-implicit Euler */
-    scene.has = MOTUS_HAS_PARTICLE_MASS | MOTUS_HAS_BOUNDS;
-    if (on->gravity) {
-        scene.has |= MOTUS_HAS_GRAVITY;
-        scene.gravity[1] = GRAVITY;
-    }
-    if (on->wind || on->random) scene.has |= MOTUS_HAS_FORCES;
-    if (on->damping) {
-        scene.has |= MOTUS_HAS_DAMPING_PER_SECOND;
-        scene.damping = DAMPING_PER_SECOND;
-    }
-    scene.bounds_min[0] = scene.bounds_min[1] = MAX_RADIUS;
-    scene.bounds_max[0] = WINDOW_WIDTH - MAX_RADIUS;
-    scene.bounds_max[1] = WINDOW_HEIGHT - MAX_RADIUS;
+    memset(&scene, 0, sizeof scene); /* zero: no forces */
+    scene.method = on->method;
+    if (on->gravity) scene.gravity = motus_v3(0, GRAVITY, 0);
+    if (on->damping) scene.damping_per_second = DAMPING_PER_SECOND;
+    scene.bounds_min = motus_v3(MAX_RADIUS, MAX_RADIUS, 0);
+    scene.bounds_max = motus_v3(WINDOW_WIDTH - MAX_RADIUS, WINDOW_HEIGHT - MAX_RADIUS, 0);
     scene.restitution = RESTITUTION;
     return scene;
+}
+
+/* The arrays as a motus_state: the force arrays only while a force is on (NULL: none to read). */
+static motus_state state_from(const sandbox *s) {
+    motus_state state;
+    memset(&state, 0, sizeof state);
+    state.dimensions = 2;
+    state.count = s->count;
+    state.position[0] = position_x;
+    state.position[1] = position_y;
+    state.velocity[0] = velocity_x;
+    state.velocity[1] = velocity_y;
+    if (s->on.wind || s->on.random) {
+        state.force[0] = force_x;
+        state.force[1] = force_y;
+    }
+    state.inverse_mass = inverse_mass;
+    return state;
 }
 
 /* This frame's force on each particle: the wind plus a new random kick. */
@@ -260,18 +283,22 @@ static void fill_forces(sandbox *s) {
 static void handle_keys(sandbox *s) {
     if (IsKeyPressed(KEY_G)) s->on.gravity = !s->on.gravity, ++s->on.presses;
     if (IsKeyPressed(KEY_W)) s->on.wind = !s->on.wind, ++s->on.presses;
-    if (IsKeyPressed(KEY_R)) s->on.random = !s->on.random, ++s->on.presses;
+    if (IsKeyPressed(KEY_K)) s->on.random = !s->on.random, ++s->on.presses;
     if (IsKeyPressed(KEY_D)) s->on.damping = !s->on.damping, ++s->on.presses;
+    if (IsKeyPressed(KEY_M)) s->on.method = (motus_method)((s->on.method + 1) % MOTUS_METHOD_COUNT), ++s->on.presses;
+    if (IsKeyPressed(KEY_R)) sandbox_place(s), ++s->resets, ++s->on.presses;
 }
 
 static void sandbox_step(sandbox *s) {
     double start, us;
     motus_result result;
     s->scene = scene_from(&s->on);
-    if (s->scene.has & MOTUS_HAS_FORCES) fill_forces(s);
+    s->state = state_from(s);
+    if (s->state.force[0]) fill_forces(s);
 
     start = GetTime();
-    result = motus_batch_step(&s->scene, &s->batch, 0, s->count, DT);
+    result = motus_step(&s->scene, &s->state, DT, NULL, 0); /* no springs or callback: no scratch */
+    ++s->steps;
     us = (GetTime() - start) * 1e6;
     /* The plain mean of the first measurements, so that the first (cold caches, first touch of the arrays'
        pages) does not linger; then an exponential moving average. */
@@ -279,37 +306,42 @@ static void sandbox_step(sandbox *s) {
     s->us_per_step += (s->steps_timed < 20 ? 1.0 / s->steps_timed : TIMING_SMOOTHING) * (us - s->us_per_step);
 
     if (result != MOTUS_OK && result != s->last_result) /* say it once, not every frame */
-        fprintf(stderr, "sandbox: motus_batch_step: %s\n", motus_result_string(result));
+        fprintf(stderr, "sandbox: motus_step: %s\n", motus_result_string(result));
     s->last_result = result;
 }
 
 /* ---- drawing -------------------------------------------------------------------------------------- */
-typedef struct flag_name {
-    unsigned flag;
-    const char *name;
-} flag_name;
-
-static const flag_name FLAG_NAMES[] = {
-    {MOTUS_HAS_GRAVITY, "GRAVITY"},
-    {MOTUS_HAS_LINEAR_DRAG, "LINEAR_DRAG"},
-    {MOTUS_HAS_DAMPING_PER_STEP, "DAMPING_PER_STEP"},
-    {MOTUS_HAS_DAMPING_PER_SECOND, "DAMPING_PER_SECOND"},
-    {MOTUS_HAS_PARTICLE_MASS, "PARTICLE_MASS"},
-    {MOTUS_HAS_FORCES, "FORCES"},
-    {MOTUS_HAS_QUADRATIC_DRAG, "QUADRATIC_DRAG"},
-    {MOTUS_HAS_ATTRACTOR, "ATTRACTOR"},
-    {MOTUS_HAS_BOUNDS, "BOUNDS"},
-};
-#define FLAG_COUNT ((int)(sizeof FLAG_NAMES / sizeof FLAG_NAMES[0]))
-
-/* "GRAVITY|FORCES|BOUNDS", or "none". */
-static void flags_text(unsigned has, char *text, size_t size) {
+/* The terms of the scene and state the sandbox can switch on (and the ones it never does, shown unlit). */
+#define TERM_COUNT 9
+static void scene_terms(const motus_scene *scene, const motus_state *state, const char *names[TERM_COUNT],
+                        int on[TERM_COUNT]) {
+    static const char *const NAMES[TERM_COUNT] = {"gravity", "linear_drag", "quadratic_drag", "damping_per_step",
+                                                  "damping_per_second", "attractor", "bounds", "state.force",
+                                                  "state.inverse_mass"};
     int i;
+    for (i = 0; i < TERM_COUNT; ++i) names[i] = NAMES[i];
+    on[0] = scene->gravity.x != 0 || scene->gravity.y != 0;
+    on[1] = scene->linear_drag != 0;
+    on[2] = scene->quadratic_drag != 0;
+    on[3] = scene->damping_per_step != 0;
+    on[4] = scene->damping_per_second != 0;
+    on[5] = scene->attractor_strength != 0;
+    on[6] = scene->bounds_min.x != 0 || scene->bounds_min.y != 0 || scene->bounds_max.x != 0 ||
+            scene->bounds_max.y != 0;
+    on[7] = state->force[0] != NULL;
+    on[8] = state->inverse_mass != NULL;
+}
+
+/* "gravity|bounds|state.inverse_mass", or "none". */
+static void terms_text(const motus_scene *scene, const motus_state *state, char *text, size_t size) {
+    const char *names[TERM_COUNT];
+    int on[TERM_COUNT], i;
+    scene_terms(scene, state, names, on);
     text[0] = '\0';
-    for (i = 0; i < FLAG_COUNT; ++i) {
-        if (!(has & FLAG_NAMES[i].flag)) continue;
+    for (i = 0; i < TERM_COUNT; ++i) {
+        if (!on[i]) continue;
         if (text[0]) strncat(text, "|", size - strlen(text) - 1);
-        strncat(text, FLAG_NAMES[i].name, size - strlen(text) - 1);
+        strncat(text, names[i], size - strlen(text) - 1);
     }
     if (!text[0]) snprintf(text, size, "none");
 }
@@ -344,9 +376,11 @@ static void draw_particles(const sandbox *s) {
 }
 
 static void draw_hud(const sandbox *s) {
-    const char *timing = TextFormat("motus_batch_step: %.1f us per frame", s->us_per_step);
+    const char *timing = TextFormat("motus_step: %.1f us per frame", s->us_per_step);
     const char *note = "for all particles, measured here (moving average)";
     const int help_y = WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT + 8;
+    const char *names[TERM_COUNT];
+    int on[TERM_COUNT];
     struct {
         const char *key, *what;
         int on;
@@ -360,23 +394,25 @@ static void draw_hud(const sandbox *s) {
     DrawText(timing, WINDOW_WIDTH - 14 - MeasureText(timing, 20), 9, 20, TEXT_BRIGHT);
     DrawText(note, WINDOW_WIDTH - 14 - MeasureText(note, 10), 29, 10, TEXT_DIM);
 
-    /* Every flag motus knows, in two rows of columns; the ones this frame's scene has are lit. */
-    DrawText("scene.has:", 14, FLAGS_TOP, 10, TEXT_DIM);
-    DrawText("MOTUS_HAS_", 14, FLAGS_TOP + FLAG_ROW, 10, TEXT_DIM);
-    for (i = 0; i < FLAG_COUNT; ++i) {
-        const int on = (s->scene.has & FLAG_NAMES[i].flag) != 0, width = MeasureText(FLAG_NAMES[i].name, 10);
+    /* The method, then the terms a scene can have, in two rows of columns; the ones this frame's has are lit. */
+    DrawText(TextFormat("[M] method: %s", motus_method_name(s->scene.method)), 14, 31, 10, LIT);
+    DrawText("terms:", 14, FLAGS_TOP, 10, TEXT_DIM);
+    DrawText("lit = on", 14, FLAGS_TOP + FLAG_ROW, 10, TEXT_DIM);
+    scene_terms(&s->scene, &s->state, names, on);
+    for (i = 0; i < TERM_COUNT; ++i) {
+        const int width = MeasureText(names[i], 10);
         const int fx = FLAG_LEFT + (i % FLAG_COLUMNS) * FLAG_COLUMN, fy = FLAGS_TOP + (i / FLAG_COLUMNS) * FLAG_ROW;
-        if (on) {
+        if (on[i]) {
             Rectangle pill;
             pill.x = (float)fx - 5, pill.y = (float)fy - 4, pill.width = (float)width + 10, pill.height = 17;
             DrawRectangleRounded(pill, 0.5f, 6, LIT_BACK);
         }
-        DrawText(FLAG_NAMES[i].name, fx, fy, 10, on ? LIT : TEXT_DIM);
+        DrawText(names[i], fx, fy, 10, on[i] ? LIT : TEXT_DIM);
     }
 
     keys[0].key = "G", keys[0].what = "gravity", keys[0].on = s->on.gravity;
     keys[1].key = "W", keys[1].what = "wind", keys[1].on = s->on.wind;
-    keys[2].key = "R", keys[2].what = "random kicks", keys[2].on = s->on.random;
+    keys[2].key = "K", keys[2].what = "random kicks", keys[2].on = s->on.random;
     keys[3].key = "D", keys[3].what = "damping", keys[3].on = s->on.damping;
     DrawRectangle(0, WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT, WINDOW_WIDTH, BOTTOM_BAR_HEIGHT, PANEL);
     DrawLine(0, WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT, WINDOW_WIDTH, WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT, RULE);
@@ -386,7 +422,8 @@ static void draw_hud(const sandbox *s) {
         DrawText(label, x, help_y, 10, keys[i].on ? LIT : TEXT_DIM);
         x += MeasureText(label, 10) + 24;
     }
-    DrawText("ESC quit", WINDOW_WIDTH - 14 - MeasureText("ESC quit", 10), help_y, 10, TEXT_DIM);
+    DrawText("[R] reset    ESC quit", WINDOW_WIDTH - 14 - MeasureText("[R] reset    ESC quit", 10), help_y, 10,
+             TEXT_DIM);
 }
 
 static void draw(const sandbox *s) {
@@ -398,7 +435,7 @@ static void draw(const sandbox *s) {
 /* ---- the run -------------------------------------------------------------------------------------- */
 static void print_summary(const sandbox *s, long frames) {
     double sum_x = 0, sum_y = 0, sum_vx = 0, sum_vy = 0;
-    char has[160];
+    char terms[200];
     int i, inside = 0;
     for (i = 0; i < s->count; ++i) {
         if (position_x[i] >= 0 && position_x[i] <= WINDOW_WIDTH && position_y[i] >= 0 && position_y[i] <= WINDOW_HEIGHT)
@@ -408,11 +445,12 @@ static void print_summary(const sandbox *s, long frames) {
         sum_vx += velocity_x[i];
         sum_vy += velocity_y[i];
     }
-    flags_text(s->scene.has, has, sizeof has);
-    printf("frames=%ld particles=%d has=%s gravity=%d wind=%d random=%d damping=%d toggles=%ld inside=%d "
-           "mean_x=%.3f mean_y=%.3f mean_vx=%.3f mean_vy=%.3f us_per_step=%.3f\n",
-           frames, s->count, has, s->on.gravity, s->on.wind, s->on.random, s->on.damping, s->on.presses, inside,
-           sum_x / s->count, sum_y / s->count, sum_vx / s->count, sum_vy / s->count, s->us_per_step);
+    terms_text(&s->scene, &s->state, terms, sizeof terms);
+    printf("frames=%ld particles=%d scene=%s method=%s gravity=%d wind=%d random=%d damping=%d toggles=%ld "
+           "resets=%ld steps=%ld inside=%d mean_x=%.3f mean_y=%.3f mean_vx=%.3f mean_vy=%.3f us_per_step=%.3f\n",
+           frames, s->count, terms, motus_method_name(s->scene.method), s->on.gravity, s->on.wind, s->on.random,
+           s->on.damping, s->on.presses, s->resets, s->steps, inside, sum_x / s->count, sum_y / s->count,
+           sum_vx / s->count, sum_vy / s->count, s->us_per_step);
 }
 
 int main(int argc, char **argv) {
@@ -423,12 +461,13 @@ int main(int argc, char **argv) {
     if (!parse_options(argc, argv, &opts)) {
         fprintf(stderr,
                 "usage: %s [--frames N] [--particles N] [--seed N] [--gravity on|off] [--wind on|off]\n"
-                "       [--random on|off] [--damping on|off] [--screenshot FILE]\n",
+                "       [--random on|off] [--damping on|off] [--method NAME] [--screenshot FILE]\n",
                 argv[0]);
         return 2;
     }
     sandbox_init(&s, &opts);
     s.scene = scene_from(&s.on); /* what the HUD and the summary show if no frame runs */
+    s.state = state_from(&s);
 
     SetTraceLogLevel(LOG_WARNING);
     InitWindow(WINDOW_WIDTH, WINDOW_HEIGHT, "motus - sandbox");

@@ -3,11 +3,11 @@ if(NOT TARGET wsad)
   message(STATUS "motus: example tests skipped (no raylib, or MOTUS_BUILD_EXAMPLES=OFF)")
   return()
 endif()
-# motus_vec2 against the real raylib.h (tests/unit.c checks a copy of the declaration everywhere).
+# motus_vec2 and motus_vec3 against the real raylib.h (tests/unit.c checks a copy of the declaration everywhere).
 motus_test_program(motus_raylib_layout raylib_layout.c)
 target_link_libraries(motus_raylib_layout PRIVATE motus::raylib)
-add_test(NAME unit.raylib_vector2_layout COMMAND motus_raylib_layout)
-set_tests_properties(unit.raylib_vector2_layout PROPERTIES LABELS unit)
+add_test(NAME unit.raylib_vector_layout COMMAND motus_raylib_layout)
+set_tests_properties(unit.raylib_vector_layout PROPERTIES LABELS unit)
 
 # Each key held for a second must move the particle its way; the script reads the printed final state.
 foreach(key w a s d)
@@ -27,9 +27,10 @@ if(TARGET orbits)
   endforeach()
 endif()
 # The sandbox example: headless runs with gravity and wind on and off, checked on their printed means and on
-# the screenshot's colours; and G, W, R, D held as real keys, each checked to flip its switch and scene.has.
+# the screenshot's colours, and under each method; and G, W, K, D, M, R held as real keys, each checked to
+# change its switch (and the printed scene), the method or reset.
 if(TARGET sandbox)
-  foreach(mode headless key_g key_w key_r key_d)
+  foreach(mode headless methods key_g key_w key_k key_d key_m key_r)
     add_test(NAME example.sandbox_${mode}
       COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/example_sandbox.sh" $<TARGET_FILE:sandbox> ${mode}
               "${CMAKE_CURRENT_BINARY_DIR}/example")

@@ -5,15 +5,20 @@
 # on every run with the same options, however fast Xvfb draws.
 #   headless  90 frames with random kicks, gravity off/on x wind off/on, plus the last again without a
 #             screenshot. Checks that every run keeps all particles inside the window (they bounce), that
-#             has= names GRAVITY exactly when gravity is on and FORCES (wind and kicks are forces), that
+#             scene= names gravity exactly when gravity is on and state.force (wind and kicks are forces), that
 #             gravity pulls the particles down (mean_y over 100 px larger) and the wind pushes them right
 #             (mean_vx > 20 px/s and mean_x over 100 px larger; without wind |mean_vx| < 10 px/s), that the
 #             same options give the same line, and that the screenshot (OUTPUT_DIR/sandbox.png) is an 800x600
 #             picture of particles in every hue, more of them in the lower half (gravity).
-#   key_g, key_w, key_r, key_d
+#   methods   60 frames with gravity, wind and kicks under each of the nine methods (--method): each run
+#             keeps every particle inside, prints its method, and gravity and wind move the mean the same
+#             way under every method (mean_y and mean_x over 50 px past those after one calm frame).
+#   key_g, key_w, key_k, key_d, key_m, key_r
 #             start with gravity, wind and damping off and random kicks on, hold the key with real key
-#             events (xdotool), then Escape: exactly one toggle, of that key's switch, and has= follows it
-#             (G: GRAVITY; W: wind on, FORCES; R: kicks off and, without wind, no FORCES; D: DAMPING_PER_SECOND).
+#             events (xdotool), then Escape: exactly one change, of that key's switch, and scene= follows it
+#             (G: gravity; W: wind on, state.force; K: kicks off and, without wind, no state.force; D:
+#             damping_per_second; M: the method after semi-implicit Euler, explicit_euler; R: one reset, so
+#             fewer steps since it than frames).
 set -eu
 binary=$1 mode=$2 out=$3
 for tool in xvfb-run python3; do
@@ -23,8 +28,8 @@ mkdir -p "$out"
 
 # field NAME LINE: the value of NAME=value in LINE.
 field() { echo "$2" | tr ' ' '\n' | sed -n "s/^$1=//p"; }
-# has_flag FLAG LINE: whether has= in LINE names FLAG.
-has_flag() { field has "$2" | tr '|' '\n' | grep -qx "$1"; }
+# has_flag TERM LINE: whether scene= in LINE names TERM.
+has_flag() { field scene "$2" | tr '|' '\n' | grep -qx "$1"; }
 # summary LOG: the line printed on exit, or a failure.
 summary() { grep '^frames=' "$1" || { echo "FAILED: no summary line in $1" >&2; cat "$1" >&2; return 1; }; }
 all_inside() {
@@ -51,9 +56,9 @@ headless)
     for line in "$calm" "$fall" "$wind" "$both"; do
         all_inside "$line" || failed=1
         gravity=$(field gravity "$line")
-        if has_flag GRAVITY "$line"; then flag=1; else flag=0; fi
-        [ "$flag" = "$gravity" ] || { echo "FAILED: has= and gravity=$gravity disagree: $line"; failed=1; }
-        has_flag FORCES "$line" || { echo "FAILED: random kicks are on, has= lacks FORCES: $line"; failed=1; }
+        if has_flag gravity "$line"; then flag=1; else flag=0; fi
+        [ "$flag" = "$gravity" ] || { echo "FAILED: scene= and gravity=$gravity disagree: $line"; failed=1; }
+        has_flag state.force "$line" || { echo "FAILED: random kicks are on, scene= lacks state.force: $line"; failed=1; }
     done
     awk -v y0="$(field mean_y "$calm")" -v y1="$(field mean_y "$fall")" -v vx0="$(field mean_vx "$calm")" \
         -v vx1="$(field mean_vx "$wind")" -v x0="$(field mean_x "$calm")" -v x1="$(field mean_x "$wind")" '
@@ -131,7 +136,23 @@ if not lower > 1.5 * upper:
 sys.exit(1 if failed else 0)
 EOF
     ;;
-key_g | key_w | key_r | key_d)
+methods)
+    start=$(run start --frames 1 --gravity off --wind off --random off) # (--frames 0 runs until Escape)
+    failed=0
+    for method in semi_implicit_euler explicit_euler position_verlet velocity_verlet leapfrog midpoint rk4 \
+                  forest_ruth exact_linear_drag; do
+        line=$(run "method_$method" --frames 60 --gravity on --wind on --method "$method")
+        echo "$line"
+        all_inside "$line" || failed=1
+        [ "$(field method "$line")" = "$method" ] || { echo "FAILED: asked for $method: $line"; failed=1; }
+        awk -v x0="$(field mean_x "$start")" -v y0="$(field mean_y "$start")" -v x1="$(field mean_x "$line")" \
+            -v y1="$(field mean_y "$line")" -v m="$method" 'BEGIN {
+            if (!(y1 > y0 + 50 && x1 > x0 + 50)) { printf "FAILED: %s: gravity and wind should move the mean\n", m; exit 1 } }' ||
+            failed=1
+    done
+    exit $failed
+    ;;
+key_g | key_w | key_k | key_d | key_m | key_r)
     command -v xdotool >/dev/null 2>&1 || { echo "FAILED: xdotool is not installed (scripts/deps.sh installs it)"; exit 1; }
     key=${mode#key_}
     log="$out/sandbox_$mode.log"
@@ -150,21 +171,26 @@ key_g | key_w | key_r | key_d)
     cat "$log"
     line=$(summary "$log")
     all_inside "$line"
-    [ "$(field toggles "$line")" = 1 ] || { echo "FAILED: holding $key should toggle exactly once"; exit 1; }
+    [ "$(field toggles "$line")" = 1 ] || { echo "FAILED: holding $key should change exactly one thing once"; exit 1; }
+    [ "$key" = r ] || [ "$(field resets "$line")" = 0 ] || { echo "FAILED: only R resets"; exit 1; }
     case "$key" in
-    g) [ "$(field gravity "$line")" = 1 ] && has_flag GRAVITY "$line" ||
-        { echo "FAILED: G should switch gravity on, and has= name GRAVITY"; exit 1; } ;;
-    w) [ "$(field wind "$line")" = 1 ] && has_flag FORCES "$line" ||
-        { echo "FAILED: W should switch the wind on, and has= name FORCES"; exit 1; } ;;
-    r) [ "$(field random "$line")" = 0 ] && ! has_flag FORCES "$line" ||
-        { echo "FAILED: R should switch the kicks off and, with no wind, FORCES with them"; exit 1; } ;;
-    d) [ "$(field damping "$line")" = 1 ] && has_flag DAMPING_PER_SECOND "$line" ||
-        { echo "FAILED: D should switch damping on, and has= name DAMPING_PER_SECOND"; exit 1; } ;;
+    g) [ "$(field gravity "$line")" = 1 ] && has_flag gravity "$line" ||
+        { echo "FAILED: G should switch gravity on, and scene= name gravity"; exit 1; } ;;
+    w) [ "$(field wind "$line")" = 1 ] && has_flag state.force "$line" ||
+        { echo "FAILED: W should switch the wind on, and scene= name state.force"; exit 1; } ;;
+    k) [ "$(field random "$line")" = 0 ] && ! has_flag state.force "$line" ||
+        { echo "FAILED: K should switch the kicks off and, with no wind, state.force with them"; exit 1; } ;;
+    d) [ "$(field damping "$line")" = 1 ] && has_flag damping_per_second "$line" ||
+        { echo "FAILED: D should switch damping on, and scene= name damping_per_second"; exit 1; } ;;
+    m) [ "$(field method "$line")" = explicit_euler ] ||
+        { echo "FAILED: M should move from semi_implicit_euler to the next method, explicit_euler"; exit 1; } ;;
+    r) [ "$(field resets "$line")" = 1 ] && [ "$(field steps "$line")" -lt "$(field frames "$line")" ] ||
+        { echo "FAILED: R should reset once, and the steps since be fewer than the frames"; exit 1; } ;;
     esac
-    echo "key $key: toggled once, has=$(field has "$line")"
+    echo "key $key: changed once, scene=$(field scene "$line") method=$(field method "$line")"
     ;;
 *)
-    echo "usage: $0 SANDBOX_BINARY headless|key_g|key_w|key_r|key_d OUTPUT_DIR" >&2
+    echo "usage: $0 SANDBOX_BINARY headless|methods|key_g|key_w|key_k|key_d|key_m|key_r OUTPUT_DIR" >&2
     exit 2
     ;;
 esac

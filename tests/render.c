@@ -9,12 +9,16 @@
      constant acceleration that error is exactly a*h*t/2 (the discrete form is x0 + v0*t + a*t*(t + h)/2);
      with damping it is the difference of the two closed forms, computed here in double.
    Each test writes a PNG of its trajectory (circles as drawn, green crosses at the continuous closed form)
-   to MOTUS_RENDER_DIR. */
+   to MOTUS_RENDER_DIR. The exact drag stepper and the 3D projectile go through motus_step: this one-unit
+   program compiles the engine (MOTUS_IMPLEMENTATION; not MOTUS_STATIC, under which the engine functions
+   this file does not call warn -Wunused-function). */
+#define MOTUS_IMPLEMENTATION
 #include "motus.h"
 #include "support/motus_canvas.h"
 #include "support/motus_test.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 #ifndef MOTUS_RENDER_DIR
 #define MOTUS_RENDER_DIR "."
@@ -80,15 +84,16 @@ typedef struct expectation {
     double continuous_x, continuous_y; /* exact solution of the differential equation */
 } expectation;
 
-/* The two checks of one sampled frame (see the top of the file). */
-static void check_frame(const motus_particle *p, int steps, expectation e) {
+/* The two checks of one sampled frame (see the top of the file), on the position as drawn (x, y). */
+static void check_position(motus_vec2 position, int steps, expectation e) {
     double cx, cy;
-    ENSURE_NEAR(p->position.x, e.discrete_x, rounding(steps, e.discrete_x));
-    ENSURE_NEAR(p->position.y, e.discrete_y, rounding(steps, e.discrete_y));
-    render(p->position, e.continuous_x, e.continuous_y, &cx, &cy);
+    ENSURE_NEAR(position.x, e.discrete_x, rounding(steps, e.discrete_x));
+    ENSURE_NEAR(position.y, e.discrete_y, rounding(steps, e.discrete_y));
+    render(position, e.continuous_x, e.continuous_y, &cx, &cy);
     ENSURE_NEAR(cx, e.continuous_x, PIXEL_TOLERANCE + fabs(e.discrete_x - e.continuous_x));
     ENSURE_NEAR(cy, e.continuous_y, PIXEL_TOLERANCE + fabs(e.discrete_y - e.continuous_y));
 }
+static void check_frame(const motus_particle *p, int steps, expectation e) { check_position(p->position, steps, e); }
 
 /* Constant acceleration a from x0, v0: semi-implicit Euler lands at x0 + v0*t + a*t*(t + h)/2. */
 static expectation constant_acceleration(motus_vec2 x0, motus_vec2 v0, double ax, double ay, int steps) {
@@ -191,7 +196,8 @@ TEST(wsad_directions) {
     report("wsad_directions");
 }
 
-/* The reference's damping: each frame v += a*h, x += v*h, then v *= d. With w the velocity after damping,
+/* The reference's damping: each frame v += a*h, x += v*h, then v *= d (motus_particle_damp_per_step(p, 1 - d):
+   the argument is the fraction removed). With w the velocity after damping,
    w_n = w* + (w0 - w*) d^n where w* = d*a*h/(1 - d), and
    x_n = x0 + n*h*a*h/(1 - d) + h*(w0 - w*)*(1 - d^n)/(1 - d).
    The continuous model it discretises is linear drag with k = -ln(d)/h:
@@ -216,7 +222,7 @@ TEST(damping_per_step_matches_linear_drag) {
         motus_particle_clear_forces(&p);
         motus_particle_add_force(&p, motus_v2(100, 0));
         ENSURE_EQ_INT(motus_particle_step(&p, (motus_real)H), MOTUS_OK);
-        ENSURE_EQ_INT(motus_particle_damp_per_step(&p, (motus_real)d), MOTUS_OK);
+        ENSURE_EQ_INT(motus_particle_damp_per_step(&p, (motus_real)(1 - d)), MOTUS_OK);
         if (n % 10 == 0) {
             expectation e;
             e.discrete_x = damped_discrete(300, v0, a, d, n);
@@ -235,21 +241,27 @@ TEST(damping_per_step_matches_linear_drag) {
     report("damping_per_step_matches_linear_drag");
 }
 
-/* One second at `rate` steps per second; `exact` picks the exact drag stepper, otherwise the reference's
-   step + damp_per_step(0.99). Returns the rendered centroid's x. */
+/* One second at `rate` steps per second; `exact` picks the exact drag stepper (a scene of linear drag k
+   stepped by MOTUS_EXACT_LINEAR_DRAG through motus_step), otherwise the reference's step + damp_per_step
+   (1% removed). Returns the rendered centroid's x. */
 static double one_second_at(int rate, int exact, double k, motus_particle *out) {
     motus_particle p = {{0, 0}, {0, 0}, {0, 0}, 0};
+    motus_scene scene;
+    motus_state state = motus_state_of_particles(&p, 1);
     double cx, cy;
     int n;
-    motus_particle_init(&p, motus_v2(100, 100 + rate), 2);
+    memset(&scene, 0, sizeof scene);
+    scene.method = MOTUS_EXACT_LINEAR_DRAG;
+    scene.linear_drag = (motus_real)k;
+    motus_particle_init(&p, motus_v2(100, (motus_real)(100 + rate)), 2);
     for (n = 0; n < rate; ++n) {
         motus_particle_clear_forces(&p);
         motus_particle_add_force(&p, motus_v2(100, 0));
         if (exact) {
-            ENSURE_EQ_INT(motus_particle_step_linear_drag(&p, (motus_real)k, MOTUS_R(1.0) / (motus_real)rate), MOTUS_OK);
+            ENSURE_EQ_INT(motus_step(&scene, &state, MOTUS_R(1.0) / (motus_real)rate, NULL, 0), MOTUS_OK);
         } else {
             motus_particle_step(&p, MOTUS_R(1.0) / (motus_real)rate);
-            motus_particle_damp_per_step(&p, MOTUS_R(0.99));
+            motus_particle_damp_per_step(&p, MOTUS_R(0.01));
         }
     }
     render(p.position, drag_continuous(100, 0, 50, k, 1), 100 + rate, &cx, &cy);
@@ -283,6 +295,46 @@ TEST(exact_drag_is_frame_rate_independent) {
     report("exact_drag_is_frame_rate_independent");
 }
 
+TEST(projectile_3d_drawn_in_the_xy_plane) {
+    /* A 3D particle under gravity g = (0, 120, -90) px/s^2 thrown from (150, 450, 40) at (200, -260, 75) px/s,
+       stepped by velocity Verlet through motus_step over a motus_particle3, and drawn with an orthographic
+       projection onto the screen's x-y plane (z dropped). Under a constant acceleration velocity Verlet is
+       exact to rounding: x(t) = x0 + v0*t + g*t^2/2 in all three components, so the discrete and continuous
+       forms are one and the drawn centroid must sit on the closed form within PIXEL_TOLERANCE. */
+    const double x0[3] = {150, 450, 40}, v0[3] = {200, -260, 75}, g[3] = {0, 120, -90};
+    motus_particle3 p;
+    motus_scene scene;
+    motus_state state = motus_state_of_particles3(&p, 1);
+    int n, k;
+    if (!open_canvases()) { ENSURE(!"OSMesa canvas"); return; }
+    start_trail();
+    memset(&scene, 0, sizeof scene);
+    scene.method = MOTUS_VELOCITY_VERLET;
+    scene.gravity = motus_v3((motus_real)g[0], (motus_real)g[1], (motus_real)g[2]);
+    ENSURE_EQ_INT(motus_particle3_init(&p, motus_v3((motus_real)x0[0], (motus_real)x0[1], (motus_real)x0[2]), 3),
+                  MOTUS_OK);
+    p.velocity = motus_v3((motus_real)v0[0], (motus_real)v0[1], (motus_real)v0[2]);
+    for (n = 1; n <= 150; ++n) {
+        ENSURE_EQ_INT(motus_step(&scene, &state, (motus_real)H, NULL, 0), MOTUS_OK);
+        if (n % 10 == 0) {
+            const double t = n * H;
+            double exact[3];
+            expectation e;
+            for (k = 0; k < 3; ++k) exact[k] = x0[k] + v0[k] * t + 0.5 * g[k] * t * t;
+            ENSURE_NEAR(p.position.z, exact[2], rounding(n, exact[2]));
+            e.discrete_x = e.continuous_x = exact[0];
+            e.discrete_y = e.continuous_y = exact[1];
+            check_position(motus_v2(p.position.x, p.position.y), n, e); /* the projection: z dropped */
+        }
+    }
+    /* After 2.5 s: x = 650, y = 450 - 650 + 375 = 175, z = 40 + 187.5 - 281.25 = -53.75. */
+    ENSURE_NEAR(p.position.x, 650, rounding(150, 650));
+    ENSURE_NEAR(p.position.y, 175, rounding(150, 450));
+    ENSURE_NEAR(p.position.z, -53.75, rounding(150, 100));
+    finish_trail("projectile_3d_drawn_in_the_xy_plane");
+    report("projectile_3d_drawn_in_the_xy_plane");
+}
+
 static const motus_test_case TESTS[] = {
     TEST_CASE(from_rest_under_constant_force),
     TEST_CASE(constant_velocity_without_force),
@@ -290,6 +342,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(wsad_directions),
     TEST_CASE(damping_per_step_matches_linear_drag),
     TEST_CASE(exact_drag_is_frame_rate_independent),
+    TEST_CASE(projectile_3d_drawn_in_the_xy_plane),
 };
 
 int main(int argc, char **argv) {

@@ -25,7 +25,13 @@ target_link_libraries(motus_canvas_selftest PRIVATE motus_canvas)
 add_test(NAME render.canvas_centroid_accuracy COMMAND motus_canvas_selftest WORKING_DIRECTORY "${MOTUS_RENDER_DIR}")
 set_tests_properties(render.canvas_centroid_accuracy PROPERTIES LABELS render)
 
+# Float (render.*) and double (render.double.*) builds; the double build writes its pictures under double/.
+file(MAKE_DIRECTORY "${MOTUS_RENDER_DIR}/double")
 motus_test_program(motus_render render.c)
+motus_test_program(motus_render_double render.c)
 target_link_libraries(motus_render PRIVATE motus_canvas)
+target_link_libraries(motus_render_double PRIVATE motus_canvas)
 target_compile_definitions(motus_render PRIVATE MOTUS_RENDER_DIR="${MOTUS_RENDER_DIR}")
+target_compile_definitions(motus_render_double PRIVATE MOTUS_DOUBLE MOTUS_RENDER_DIR="${MOTUS_RENDER_DIR}/double")
 motus_register_tests(motus_render "${CMAKE_CURRENT_SOURCE_DIR}/render.c" render render)
+motus_register_tests(motus_render_double "${CMAKE_CURRENT_SOURCE_DIR}/render.c" render.double render)

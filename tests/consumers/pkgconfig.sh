@@ -1,6 +1,7 @@
 #!/bin/sh
 # Usage: pkgconfig.sh PREFIX OUTPUT_DIR CC
-# A Makefile-style consumer: compiler flags from `pkg-config motus` of an installed motus.
+# A Makefile-style consumer: compiler flags from `pkg-config motus` of an installed motus; main.c and engine.c
+# (the unit with MOTUS_IMPLEMENTATION) linked into one program.
 set -eu
 prefix=$1 out=$2 cc=$3
 here=$(cd "$(dirname "$0")" && pwd)
@@ -9,5 +10,6 @@ pkg-config --exists --print-errors "motus >= 0.1"
 echo "pkg-config motus: version $(pkg-config --modversion motus), flags $(pkg-config --cflags --libs motus)"
 mkdir -p "$out"
 # shellcheck disable=SC2046
-"$cc" -std=c99 -Wall -Wextra -Werror $(pkg-config --cflags motus) "$here/main.c" -o "$out/consumer" $(pkg-config --libs motus)
+"$cc" -std=c99 -Wall -Wextra -Werror $(pkg-config --cflags motus) "$here/main.c" "$here/engine.c" -o "$out/consumer" \
+    $(pkg-config --libs motus)
 "$out/consumer"

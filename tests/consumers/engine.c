@@ -1,0 +1,3 @@
+/* The one file of a consumer that compiles the engine (stb style); main.c only includes motus.h. */
+#define MOTUS_IMPLEMENTATION
+#include <motus.h>
