@@ -2182,9 +2182,12 @@ static void motus__stage_forces(const motus__job *j, const motus_scene *scene, i
                                 motus_real time) {
     motus_real *force[3] = {NULL, NULL, NULL};
     int d, k;
+    /* -0, not +0: adding -0 changes no value (x + -0 is x, -0 included), so a stage with no coupled force
+       gives the bits of a scene without coupling. */
     for (d = 0; d < dims; ++d) {
+        int i;
         force[d] = (motus_real *)(uintptr_t)j->stage_force[stage][d];
-        memset(force[d], 0, (size_t)count * sizeof(motus_real));
+        for (i = 0; i < count; ++i) force[d][i] = -MOTUS_R(0.0);
     }
     if (scene->force_callback) {
         motus_force_query query;
