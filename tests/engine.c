@@ -60,6 +60,23 @@ static motus_real random_or_zero(double lo, double hi) {
     return random_real(lo, hi);
 }
 
+/* Three values in x, y, z order (one statement each: the order of a call's arguments is unspecified, and
+   GCC and Clang differ, so motus_v3(random(), random(), random()) would be another scene in a Clang build). */
+static motus_vec3 random_vec3(double lo, double hi) {
+    motus_vec3 v;
+    v.x = random_real(lo, hi);
+    v.y = random_real(lo, hi);
+    v.z = random_real(lo, hi);
+    return v;
+}
+static motus_vec3 random_vec3_or_zero(double lo, double hi) {
+    motus_vec3 v;
+    v.x = random_or_zero(lo, hi);
+    v.y = random_or_zero(lo, hi);
+    v.z = random_or_zero(lo, hi);
+    return v;
+}
+
 /* ---- particles as plain arrays ---- */
 typedef struct soa {
     motus_real x[3][MAX], v[3][MAX], f[3][MAX], w[MAX];
@@ -192,16 +209,18 @@ static void make_scene(motus_scene *scene, const setup *s) {
     memset(scene, 0, sizeof *scene);
     scene->method = s->method;
     scene->substeps = s->substeps == 1 && random_int(2) ? 0 : s->substeps; /* 0 and 1: one step */
-    scene->attractor = motus_v3(random_real(-5, 5), random_real(-5, 5), random_real(-5, 5));
-    if (s->terms & T_GRAVITY) scene->gravity = motus_v3(random_real(-10, 10), random_real(-10, 10), random_real(-10, 10));
+    /* beside the particles and the walls (|x| >= 13 m): a wall's mirror could otherwise put one next to it */
+    scene->attractor = random_vec3(-5, 5);
+    scene->attractor.x = (scene->attractor.x < 0 ? -13 : 13) + scene->attractor.x * MOTUS_R(0.6);
+    if (s->terms & T_GRAVITY) scene->gravity = random_vec3(-10, 10);
     if (s->terms & T_LINEAR_DRAG) scene->linear_drag = random_real(0.05, 1);
     if (s->terms & T_QUADRATIC_DRAG) scene->quadratic_drag = random_real(0.01, 0.2);
     if (s->terms & T_ATTRACTOR) scene->attractor_strength = random_real(1, 50);
     if (s->damping == DAMP_PER_STEP) scene->damping_per_step = random_real(0, 0.1);
     if (s->damping == DAMP_PER_SECOND) scene->damping_per_second = random_real(0, 0.6);
     if (s->terms & T_BOUNDS) {
-        scene->bounds_min = motus_v3(random_real(-11, -6), random_real(-11, -6), random_real(-11, -6));
-        scene->bounds_max = motus_v3(random_real(6, 11), random_real(6, 11), random_real(6, 11));
+        scene->bounds_min = random_vec3(-11, -6);
+        scene->bounds_max = random_vec3(6, 11);
         if (random_int(4) == 0) scene->bounds_max.y = (motus_real)HUGE_VAL; /* no wall on that side */
         if (random_int(4) == 0) scene->bounds_min.x = -(motus_real)HUGE_VAL;
         scene->restitution = random_int(5) == 0 ? (motus_real)random_int(2) : random_real(0, 1);
@@ -425,8 +444,8 @@ TEST(particle_step_equals_zeroed_scene) {
     for (dims = 2; dims <= 3; ++dims) {
         motus_state state = dims == 2 ? motus_state_of_particles(b2, N) : motus_state_of_particles3(b3, N);
         for (i = 0; i < N; ++i) {
-            motus_vec3 x = motus_v3(random_real(-50, 50), random_real(-50, 50), random_real(-50, 50));
-            motus_vec3 v = motus_v3(random_or_zero(-5, 5), random_or_zero(-5, 5), random_or_zero(-5, 5));
+            motus_vec3 x = random_vec3(-50, 50);
+            motus_vec3 v = random_vec3_or_zero(-5, 5);
             const motus_real w = i % 5 == 2 ? 0 : random_real(0.1, 10);
             if (dims == 2) {
                 a2[i].position = motus_v2(x.x, x.y), a2[i].velocity = motus_v2(v.x, v.y), a2[i].inverse_mass = w;
@@ -438,7 +457,7 @@ TEST(particle_step_equals_zeroed_scene) {
         for (step = 0; step < PARTICLE_STEPS; ++step) {
             const motus_real dt = step % 13 == 5 ? 0 : random_real(0.001, 0.05);
             for (i = 0; i < N; ++i) {
-                motus_vec3 f = motus_v3(random_or_zero(-20, 20), random_or_zero(-20, 20), random_or_zero(-20, 20));
+                motus_vec3 f = random_vec3_or_zero(-20, 20);
                 if (dims == 2) {
                     a2[i].force = motus_v2(f.x, f.y);
                     negative_zeros += bits_of(a2[i].velocity.x) == bits_of(-(motus_real)0);
@@ -485,9 +504,9 @@ TEST(particle_functions_equal_scene_with_bounds_and_damping) {
             if (kind == DAMP_PER_STEP) scene.damping_per_step = MOTUS_R(0.02);
             else scene.damping_per_second = MOTUS_R(0.3);
             for (i = 0; i < N; ++i) {
-                const motus_vec3 x = motus_v3(random_real(-4, 4), random_real(-3, 3), random_real(-2, 2));
-                const motus_vec3 v = motus_v3(random_or_zero(-30, 30), random_or_zero(-30, 30), random_or_zero(-30, 30));
-                const motus_vec3 f = motus_v3(random_or_zero(-9, 9), random_or_zero(-9, 9), random_or_zero(-9, 9));
+                const motus_vec3 u = random_vec3(-1, 1), x = motus_v3(u.x * 4, u.y * 3, u.z * 2);
+                const motus_vec3 v = random_vec3_or_zero(-30, 30);
+                const motus_vec3 f = random_vec3_or_zero(-9, 9);
                 const motus_real w = i % 7 == 3 ? 0 : random_real(0.5, 2);
                 if (dims == 2) {
                     a2[i].position = motus_v2(x.x, x.y), a2[i].velocity = motus_v2(v.x, v.y);
@@ -616,7 +635,7 @@ TEST(springs_equal_a_force_callback) {
                     sp->a = random_int(N);
                     sp->b = j % 6 == 0 ? -1 : random_int(N);
                     if (sp->b == sp->a) sp->b = (sp->a + 1) % N;
-                    sp->anchor = motus_v3(random_real(-5, 5), random_real(-5, 5), random_real(-5, 5));
+                    sp->anchor = random_vec3(-5, 5);
                     sp->rest_length = j % 4 == 1 ? 0 : random_real(0.5, 3);
                     sp->stiffness = random_real(1, 40);
                     sp->damping = j % 8 == 1 ? 0 : random_real(0, 0.5);
