@@ -1,6 +1,8 @@
 /* problems.h - the reference problems the integrators are measured on, with their known answers.
    Shared by bench/tradeoff and tests/numeric.c. One particle of mass 1 per problem (a batch is many copies);
-   SI units; everything here is double, whatever motus_real is.
+   SI units; everything here is double, whatever motus_real is. Each problem carries the motus_scene that
+   poses it (method left at 0, semi-implicit Euler: set scene.method before stepping). The oscillators'
+   scene has a spring to an anchor, so motus_step needs scratch for them (motus_scratch_size).
 
    problem                  force model                              known answer
    free_fall                gravity (0, -9.81)                       x0 + v0 t + g t^2/2
@@ -29,8 +31,8 @@ typedef struct problem {
     const char *name;
     problem_state start;
     double duration; /* seconds the error is measured over */
-    motus_forces forces;
-    motus_spring spring; /* used by the oscillators: forces.springs points here, so pass problems by pointer */
+    motus_scene scene;   /* the forces; scene.method is 0 (set yours); scene.mass 0 = 1 kg */
+    motus_spring spring; /* used by the oscillators: scene.springs points here, so pass problems by pointer */
     /* The exact state at time t, or NULL where there is no closed form. */
     problem_state (*exact)(double t);
     /* Total energy per unit mass (kinetic + potential), or NULL where energy is not conserved. */
@@ -145,7 +147,7 @@ static inline int problem_get(int which, problem *p) {
         p->name = "free_fall";
         p->start.vx = 3, p->start.vy = 12;
         p->duration = 2;
-        p->forces.gravity = motus_v2(0, (motus_real)-PROBLEM_G);
+        p->scene.gravity = motus_v3(0, (motus_real)-PROBLEM_G, 0);
         p->exact = problem_free_fall_exact;
         p->energy = problem_gravity_energy;
         break;
@@ -153,8 +155,8 @@ static inline int problem_get(int which, problem *p) {
         p->name = "gravity_linear_drag";
         p->start.vx = 3, p->start.vy = 12;
         p->duration = 2;
-        p->forces.gravity = motus_v2(0, (motus_real)-PROBLEM_G);
-        p->forces.linear_drag = (motus_real)PROBLEM_DRAG;
+        p->scene.gravity = motus_v3(0, (motus_real)-PROBLEM_G, 0);
+        p->scene.linear_drag = (motus_real)PROBLEM_DRAG;
         p->exact = problem_linear_drag_exact;
         break;
     case PROBLEM_HARMONIC_OSCILLATOR:
@@ -165,13 +167,13 @@ static inline int problem_get(int which, problem *p) {
         p->spring.a = 0;
         p->spring.b = -1; /* to the anchor at the origin, rest length 0: F = -k x */
         p->spring.stiffness = (motus_real)(PROBLEM_OMEGA * PROBLEM_OMEGA);
-        p->forces.springs = &p->spring;
-        p->forces.spring_count = 1;
+        p->scene.springs = &p->spring;
+        p->scene.spring_count = 1;
         if (which == PROBLEM_HARMONIC_OSCILLATOR) {
             p->exact = problem_oscillator_exact;
             p->energy = problem_oscillator_energy;
         } else {
-            p->forces.linear_drag = (motus_real)PROBLEM_OSCILLATOR_DRAG;
+            p->scene.linear_drag = (motus_real)PROBLEM_OSCILLATOR_DRAG;
             p->exact = problem_damped_oscillator_exact;
         }
         break;
@@ -179,7 +181,7 @@ static inline int problem_get(int which, problem *p) {
         p->name = "kepler_circular";
         p->start.x = 1, p->start.vy = 1;
         p->duration = 2 * PROBLEM_PI;
-        p->forces.attractor_strength = 1;
+        p->scene.attractor_strength = 1;
         p->exact = problem_kepler_circular_exact;
         p->energy = problem_kepler_energy;
         break;
@@ -188,7 +190,7 @@ static inline int problem_get(int which, problem *p) {
         p->start.x = 1 - PROBLEM_ECCENTRICITY;
         p->start.vy = sqrt((1 + PROBLEM_ECCENTRICITY) / (1 - PROBLEM_ECCENTRICITY)); /* vis-viva at periapsis */
         p->duration = 2 * PROBLEM_PI;
-        p->forces.attractor_strength = 1;
+        p->scene.attractor_strength = 1;
         p->exact = problem_kepler_eccentric_exact;
         p->energy = problem_kepler_energy;
         break;
@@ -196,15 +198,15 @@ static inline int problem_get(int which, problem *p) {
         p->name = "projectile_quadratic_drag";
         p->start.vx = 20, p->start.vy = 20;
         p->duration = 3;
-        p->forces.gravity = motus_v2(0, (motus_real)-PROBLEM_G);
-        p->forces.quadratic_drag = (motus_real)PROBLEM_QUADRATIC_DRAG;
+        p->scene.gravity = motus_v3(0, (motus_real)-PROBLEM_G, 0);
+        p->scene.quadratic_drag = (motus_real)PROBLEM_QUADRATIC_DRAG;
         break;
     default: return 0;
     }
     return 1;
 }
 
-/* A particle of mass 1 at the problem's start. */
+/* A particle of mass 1 at the problem's start (2D; problem_particle3: in the plane z = 0). */
 static inline motus_particle problem_particle(const problem *p) {
     motus_particle particle;
     /* Zeroed first: mass 1 never fails, but GCC 12 under -fsanitize=address cannot see that and warns
@@ -215,7 +217,27 @@ static inline motus_particle problem_particle(const problem *p) {
     return particle;
 }
 
+static inline motus_particle3 problem_particle3(const problem *p) {
+    motus_particle3 particle;
+    memset(&particle, 0, sizeof particle);
+    motus_particle3_init(&particle, motus_v3((motus_real)p->start.x, (motus_real)p->start.y, 0), 1);
+    particle.velocity = motus_v3((motus_real)p->start.vx, (motus_real)p->start.vy, 0);
+    return particle;
+}
+
+/* 1 if the problem's scene couples particles (a spring): motus_step needs scratch, motus_step_range refuses it. */
+static inline int problem_needs_scratch(const problem *p) {
+    return p->scene.spring_count > 0 || p->scene.force_callback != NULL;
+}
+
 static inline problem_state problem_state_of(const motus_particle *particle) {
+    problem_state s;
+    s.x = particle->position.x, s.y = particle->position.y;
+    s.vx = particle->velocity.x, s.vy = particle->velocity.y;
+    return s;
+}
+
+static inline problem_state problem_state_of3(const motus_particle3 *particle) {
     problem_state s;
     s.x = particle->position.x, s.y = particle->position.y;
     s.vx = particle->velocity.x, s.vy = particle->velocity.y;

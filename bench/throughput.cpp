@@ -768,7 +768,7 @@ void report_targets(std::ostream &md, const results &res) {
                 targets.push_back({"textbook path (motus_particle_clear_forces, _add_force, _step, _damp_per_step, "
                                    "_bounce) / plain loop, N = 5000, " + config_name(dims, precision) + ", " +
                                        res.info.at(build).at("flags"),
-                                   fmt_ratio(ratio), "report", -1,
+                                   fmt_ratio(ratio), "", -1,
                                    "textbook path / motus_step (SoA, no walls): " + fmt_ratio(vs_motus)});
             }
     }

@@ -11,15 +11,14 @@
 // problem once, over at least S seconds of stepping (default 0.02: the run is repeated, resets untimed)
 // after a warm-up run. Cost to reach the duration at a given dt is then ns per particle-step x steps.
 // Kepler energy: K orbits (default 1000) of kepler_eccentric at dt = 1/60 s. --quick: a smoke run in
-// seconds (5 time steps, N = 256, 3 rounds, 20 orbits).
+// seconds (5 time steps, N = 64, 2 rounds, 20 orbits).
 //
 // Writes into DIR (default tradeoff-out): tradeoff.csv (one row per method x precision x problem x dt),
 // tradeoff_ratios.csv (cost ratio motus/peer at every error level), tradeoff.md (the tables, also printed on
 // stdout), kepler_energy.dat and plot/ (the data and line lists bench/plot_tradeoff.gp draws). Progress goes
 // to stderr. scripts/tradeoff.sh builds, runs this and draws the PNGs.
 #define MOTUS_DOUBLE
-#include "motus.h"
-#include "tradeoff_problems.h"
+#include "problems.h"
 #include "tradeoff.h"
 
 #include <algorithm>
@@ -116,7 +115,7 @@ std::vector<line> make_lines() {
     return lines;
 }
 
-bool velocity_dependent(const problem &p) { return p.forces.linear_drag != 0 || p.forces.quadratic_drag != 0; }
+bool velocity_dependent(const problem &p) { return p.scene.linear_drag != 0 || p.scene.quadratic_drag != 0; }
 
 // Why a method does not run on a problem, or NULL if it does. The motus exact stepper is not listed: motus
 // itself answers MOTUS_ERROR_UNSUPPORTED for it.
@@ -296,7 +295,7 @@ int main(int argc, char **argv) {
             return 2;
         }
     }
-    if (opt.quick) opt.particles = std::min(opt.particles, 256), opt.repetitions = std::min(opt.repetitions, 3),
+    if (opt.quick) opt.particles = std::min(opt.particles, 64), opt.repetitions = std::min(opt.repetitions, 2),
                    opt.orbits = std::min(opt.orbits, 20), opt.seconds = std::min(opt.seconds, 0.002);
     if (opt.particles < 1 || opt.repetitions < 1 || opt.repetitions > 64 || opt.orbits < 1 || !(opt.seconds >= 0)) {
         usage();

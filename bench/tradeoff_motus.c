@@ -10,7 +10,7 @@
 #define MOTUS_IMPLEMENTATION
 #define MOTUS_STATIC
 #include "motus.h"
-#include "tradeoff_problems.h"
+#include "problems.h"
 #include "tradeoff.h"
 
 #include <stdlib.h>
@@ -50,29 +50,23 @@ static void batch_close(batch *b) {
 
 /* 0 on failure. */
 static int batch_open(batch *b, int which, int method, int count, int count_evaluations) {
-    const problem_forces *f;
     int i;
     memset(b, 0, sizeof *b);
     if (!problem_get(which, &b->problem) || count < 1) return 0;
-    f = &b->problem.forces;
     b->count = count;
     b->x = (motus_real *)malloc(sizeof(motus_real) * (size_t)count);
     b->y = (motus_real *)malloc(sizeof(motus_real) * (size_t)count);
     b->vx = (motus_real *)malloc(sizeof(motus_real) * (size_t)count);
     b->vy = (motus_real *)malloc(sizeof(motus_real) * (size_t)count);
     if (!b->x || !b->y || !b->vx || !b->vy) return 0;
+    b->scene = b->problem.scene; /* the problem's forces (bench/problems.h) */
     b->scene.method = (motus_method)method;
-    b->scene.gravity = motus_v3((motus_real)f->gravity_x, (motus_real)f->gravity_y, 0);
-    b->scene.linear_drag = (motus_real)f->linear_drag;
-    b->scene.quadratic_drag = (motus_real)f->quadratic_drag;
-    b->scene.attractor_strength = (motus_real)f->attractor_strength; /* attractor at the origin */
-    if (f->spring_stiffness > 0) {
-        b->springs = (motus_spring *)calloc((size_t)count, sizeof(motus_spring));
+    if (b->problem.scene.spring_count > 0) { /* each copy gets its own spring to the anchor */
+        b->springs = (motus_spring *)malloc(sizeof(motus_spring) * (size_t)count);
         if (!b->springs) return 0;
         for (i = 0; i < count; ++i) {
+            b->springs[i] = b->problem.spring;
             b->springs[i].a = i;
-            b->springs[i].b = -1; /* anchored at the origin, rest length 0 */
-            b->springs[i].stiffness = (motus_real)f->spring_stiffness;
         }
         b->scene.springs = b->springs;
         b->scene.spring_count = count;

@@ -7,7 +7,8 @@
 // every particle for the first-order steppers; coordinates and momenta for the symplectic ones), GSL through
 // gsl_odeiv2_driver_apply_fixed_step. The accelerations are written by hand for each problem, as a user of
 // those libraries would write them, while motus evaluates its general force model (a motus_scene).
-#include "tradeoff_problems.h"
+#define MOTUS_DOUBLE
+#include "problems.h"
 #include "tradeoff.h"
 
 #include <gsl/gsl_errno.h>
