@@ -1,7 +1,8 @@
 # plot_throughput.gp - draws the figures of bench/throughput from the files its report wrote into OUT:
 #   gnuplot -e "out='OUT'" bench/plot_throughput.gp
 # writes OUT/throughput.png (gravity + damping in the four configurations, with the memory bound),
-# OUT/throughput_scenes.png (every scene: motus, the hand-written loop, the general kernel) and, when the -O2
+# OUT/throughput_scenes.png (every scene: motus semi-implicit Euler and rk4, the hand-written loop, motus with
+# walls nobody reaches) and, when the -O2
 # build was measured, OUT/throughput_o2.png. scripts/throughput.sh runs it. Every curve is one file of
 # OUT/plot/ (BUILD_DIMSd_PRECISION_SCENE_METHOD.dat: N, median, min, max ns per particle-step).
 
@@ -46,7 +47,7 @@ if (has_native) {
         do for [p=1:2] {
             precision = word("float double", p)
             set title sprintf("%dD %s", dims, precision) font "sans,15"
-            plot curve("native", dims, precision, "gravity_damping", "textbook") using 1:2 with linespoints ls 1 title "textbook loop (array of structs, F/m)", \
+            plot curve("native", dims, precision, "gravity_damping", "textbook") using 1:2 with linespoints ls 1 title "textbook path (motus\\_particle\\_*, N = 5000)", \
                  curve("native", dims, precision, "gravity_damping", "general") using 1:2 with linespoints ls 4 title "motus general kernel", \
                  curve("native", dims, precision, "gravity", "odeint_symplectic_euler") using 1:2 with linespoints ls 6 title "odeint symplectic\\_euler (gravity)", \
                  curve("native", dims, precision, "gravity", "odeint_velocity_verlet") using 1:2 with linespoints ls 7 title "odeint velocity\\_verlet (gravity)", \
@@ -62,15 +63,16 @@ if (has_native) {
     unset multiplot
 
     # ---- 2: every scene, float, native build: solid 2D, dashed 3D ------------------------------------
-    set terminal pngcairo size 2400,1400 enhanced font "sans,13" linewidth 1.2
+    set terminal pngcairo size 3000,1400 enhanced font "sans,13" linewidth 1.2
     set output out."/throughput_scenes.png"
-    scenes = "drift gravity gravity_damping gravity_linear_drag mass_forces springs"
-    titles = "'drift only' 'gravity' 'gravity + damping' 'gravity + linear drag' 'per-particle mass + user forces' 'springs: a chain of N (2D only)'"
-    set multiplot layout 2,3 title "Each scene, float, -O3 -march=native: motus against the hand-written loop for exactly that scene and against its general kernel (2D solid, 3D dashed)\n".machine_native font "sans,16"
-    do for [i=1:6] {
+    scenes = "drift gravity gravity_damping gravity_linear_drag mass_forces springs attractor"
+    titles = "'drift only' 'gravity' 'gravity + damping' 'gravity + linear drag' 'per-particle mass + user forces' 'springs: a chain of N (2D only, coupled)' 'attractor (Kepler)'"
+    set multiplot layout 2,4 title "Each scene, float, -O3 -march=native: motus_step (semi-implicit Euler, and rk4) against the hand-written loop for exactly that scene (2D solid, 3D dashed)\n".machine_native font "sans,16"
+    do for [i=1:7] {
         scene = word(scenes, i)
         set title word(titles, i) font "sans,15"
-        two = sprintf("curve('native', 2, 'float', '%s', 'general') using 1:2 with linespoints ls 4 title 'motus general kernel, 2D', ", scene) . \
+        two = sprintf("curve('native', 2, 'float', '%s', 'general') using 1:2 with linespoints ls 4 title 'motus + walls nobody reaches, 2D', ", scene) . \
+              sprintf("curve('native', 2, 'float', '%s', 'motus_rk4') using 1:2 with linespoints ls 5 title 'motus rk4, 2D', ", scene) . \
               sprintf("curve('native', 2, 'float', '%s', 'hand') using 1:2 with linespoints ls 2 title 'hand-written loop, 2D', ", scene) . \
               sprintf("curve('native', 2, 'float', '%s', 'motus') using 1:2 with linespoints ls 3 title 'motus, 2D', ", scene) . \
               "curve('native', 2, 'float', 'memory', 'rmw') using 1:2 with lines ls 10 title 'bound (2D)'"
@@ -87,11 +89,11 @@ if (has_native) {
 if (has_o2) {
     set terminal pngcairo size 2000,800 enhanced font "sans,13" linewidth 1.2
     set output out."/throughput_o2.png"
-    set multiplot layout 1,2 title "gravity + damping at -O2 (no -march): motus's vector extensions against what gcc makes of plain loops\n".machine_o2 font "sans,16"
+    set multiplot layout 1,2 title "gravity + damping at -O2 (no -march): motus\\_step against what gcc makes of plain loops\n".machine_o2 font "sans,16"
     do for [dims=2:3] {
         set title sprintf("%dD float", dims) font "sans,15"
-        plot curve("o2", dims, "float", "gravity_damping", "textbook") using 1:2 with linespoints ls 1 title "textbook loop, -O2", \
-             curve("o2", dims, "float", "gravity_damping", "general") using 1:2 with linespoints ls 4 title "motus general kernel, -O2", \
+        plot curve("o2", dims, "float", "gravity_damping", "textbook") using 1:2 with linespoints ls 1 title "textbook path (motus\\_particle\\_*, N = 5000), -O2", \
+             curve("o2", dims, "float", "gravity_damping", "general") using 1:2 with linespoints ls 4 title "motus + walls nobody reaches, -O2", \
              curve("o2", dims, "float", "gravity_damping", "hand") using 1:2 with linespoints ls 2 title "hand-written loop, -O2", \
              curve("o2", dims, "float", "gravity_damping", "motus") using 1:2 with linespoints ls 3 title "motus, -O2", \
              (has_native ? curve("native", dims, "float", "gravity_damping", "motus") : "/dev/null") using 1:2 with lines ls 3 lw 1.5 dt 3 title "motus, -O3 -march=native", \

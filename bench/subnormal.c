@@ -19,7 +19,7 @@
 
 const char *subnormal_loop_name(int loop) {
     static const char *names[LOOP_COUNT] = {"old particle loop (copy, no flush)", "new particle loop (motus.h)",
-                                            "old batch loop (copy, no flush)", "new batch kernel (motus.h)"};
+                                            "old batch loop (copy, no flush)", "new motus_step (motus.h)"};
     return names[loop];
 }
 

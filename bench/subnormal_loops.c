@@ -3,12 +3,15 @@
 
    Four loops, each a damped particle coasting (no force; v *= 0.99 each step at dt 1/60):
    - old particle: a copy of the loop before the flush (semi-implicit Euler, then v *= 0.99);
-   - new particle: motus_particle_step + motus_particle_damp_per_step (which flushes |v| < MOTUS_REST_SPEED);
+   - new particle: motus_particle_step + motus_particle_damp_per_step(0.01) (which flushes |v| < MOTUS_REST_SPEED);
    - old batch: a copy of what the batch kernel computed for this scene before the flush, on the SoA arrays
      (v += a*h with a = 0; x += v*h; v *= damping), which gcc vectorises;
-   - new batch: motus_batch_step with MOTUS_HAS_DAMPING_PER_STEP. */
+   - new batch: motus_step over the SoA arrays, scene.damping_per_step = 0.01 (the engine compiled here,
+     static, in each precision). */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime under -std=c99 */
 
+#define MOTUS_IMPLEMENTATION
+#define MOTUS_STATIC
 #include "motus.h"
 #include "subnormal.h"
 
@@ -31,7 +34,8 @@
 #define KERNEL __attribute__((noinline))
 #endif
 
-static const motus_real DAMPING = MOTUS_R(0.99);
+static const motus_real DAMPING = MOTUS_R(0.01); /* the fraction removed per step */
+static const motus_real KEPT = MOTUS_R(0.99);    /* what the old loops multiply by */
 
 typedef struct arrays {
     motus_real *x, *y, *vx, *vy;
@@ -44,7 +48,7 @@ KERNEL static void old_particle_step(motus_particle *p, int n, motus_real dt) {
     for (i = 0; i < n; ++i) { /* motus_particle_step and the old motus_particle_damp_per_step, inlined */
         motus_vec2 v = motus_vec2_add(p[i].velocity, motus_vec2_scale(motus_vec2_scale(p[i].force, p[i].inverse_mass), dt));
         p[i].position = motus_vec2_add(p[i].position, motus_vec2_scale(v, dt));
-        p[i].velocity = motus_vec2_scale(v, DAMPING);
+        p[i].velocity = motus_vec2_scale(v, KEPT);
     }
 }
 KERNEL static void new_particle_step(motus_particle *p, int n, motus_real dt) {
@@ -66,8 +70,8 @@ KERNEL static void old_batch_step(motus_real *restrict x, motus_real *restrict y
         vy[i] = w * damping;
     }
 }
-KERNEL static void new_batch_step(const motus_scene *scene, const motus_batch *batch, int n, motus_real h) {
-    motus_batch_step(scene, batch, 0, n, h);
+KERNEL static void new_batch_step(const motus_scene *scene, const motus_state *state, motus_real h) {
+    motus_step(scene, state, h, NULL, 0);
 }
 
 static void fill(arrays *a, int subnormal) {
@@ -95,7 +99,7 @@ double NAME(subnormal_measure)(int loop, int subnormal, int particles, int steps
     const motus_real dt = MOTUS_R(1.0) / 60;
     arrays a;
     motus_scene scene;
-    motus_batch batch;
+    motus_state state;
     double best = 1e300;
     int rep, step;
     a.n = particles;
@@ -104,12 +108,11 @@ double NAME(subnormal_measure)(int loop, int subnormal, int particles, int steps
     if (!a.x || !a.particles) return -1;
     a.y = a.x + particles, a.vx = a.y + particles, a.vy = a.vx + particles;
     memset(&scene, 0, sizeof scene);
-    scene.has = MOTUS_HAS_DAMPING_PER_STEP;
-    scene.damping = DAMPING;
-    scene.inverse_mass = 1;
-    memset(&batch, 0, sizeof batch);
-    batch.dimensions = 2;
-    batch.position[0] = a.x, batch.position[1] = a.y, batch.velocity[0] = a.vx, batch.velocity[1] = a.vy;
+    scene.damping_per_step = DAMPING; /* mass 1 kg (scene.mass 0) */
+    memset(&state, 0, sizeof state);
+    state.dimensions = 2;
+    state.count = particles;
+    state.position[0] = a.x, state.position[1] = a.y, state.velocity[0] = a.vx, state.velocity[1] = a.vy;
     for (rep = 0; rep < repetitions; ++rep) {
         double start, elapsed;
         fill(&a, subnormal);
@@ -118,8 +121,8 @@ double NAME(subnormal_measure)(int loop, int subnormal, int particles, int steps
             switch (loop) {
             case LOOP_OLD_PARTICLE: old_particle_step(a.particles, particles, dt); break;
             case LOOP_NEW_PARTICLE: new_particle_step(a.particles, particles, dt); break;
-            case LOOP_OLD_BATCH: old_batch_step(a.x, a.y, a.vx, a.vy, particles, dt, DAMPING); break;
-            default: new_batch_step(&scene, &batch, particles, dt); break;
+            case LOOP_OLD_BATCH: old_batch_step(a.x, a.y, a.vx, a.vy, particles, dt, KEPT); break;
+            default: new_batch_step(&scene, &state, dt); break;
             }
         }
         elapsed = seconds() - start;

@@ -2,7 +2,7 @@
    throughput_kernels.c  everything written in C: the motus calls, the hand-written loop of each scene, the
                          textbook loop, the memory-bandwidth kernels and the OpenMP split. Compiled twice in
                          each build: float (functions ending _float) and MOTUS_DOUBLE (ending _double);
-   throughput_odeint.cpp Boost.Odeint's symplectic_euler and velocity_verlet on the gravity scene;
+   throughput_odeint.cpp Boost.Odeint's symplectic_euler, velocity_verlet and runge_kutta4 on the gravity scene;
    throughput.cpp        the sizes, the interleaved timing rounds, the CSV, and the report (tables, targets,
                          plot data) over the results of both builds.
    Only plain C types cross between them. A "work" is one state of N particles in 2D or 3D (one precision)
@@ -17,48 +17,74 @@
 extern "C" {
 #endif
 
-/* What the particles feel. Each has a motus scene (MOTUS_HAS_* flags) and a hand-written loop. */
+/* What the particles feel. Each is a motus_scene (the fields set) and a hand-written loop (semi-implicit
+   Euler, the same math). */
 enum {
-    THROUGHPUT_DRIFT,              /* nothing: x += v*h                                       (has = 0) */
-    THROUGHPUT_GRAVITY,            /* v += g*h; x += v*h                                      GRAVITY */
-    THROUGHPUT_GRAVITY_DAMPING,    /* then v *= 0.99 (the reference program's friction)       GRAVITY | DAMPING_PER_STEP */
-    THROUGHPUT_GRAVITY_LINEAR_DRAG,/* v += (g - k*v)*h                                        GRAVITY | LINEAR_DRAG */
-    THROUGHPUT_MASS_FORCES,        /* v += F[i]*invmass[i]*h, user forces held constant       PARTICLE_MASS | FORCES */
-    THROUGHPUT_SPRINGS,            /* a chain of N springs, forces cleared and summed each step  FORCES (2D only) */
+    THROUGHPUT_DRIFT,              /* nothing: x += v*h                                       (zero scene) */
+    THROUGHPUT_GRAVITY,            /* v += g*h; x += v*h                                      gravity */
+    THROUGHPUT_GRAVITY_DAMPING,    /* then v *= 1 - 0.01 (the reference program's friction)   gravity, damping_per_step */
+    THROUGHPUT_GRAVITY_LINEAR_DRAG,/* v += (g - k*v)*h                                        gravity, linear_drag */
+    THROUGHPUT_MASS_FORCES,        /* v += F[i]*invmass[i]*h, user forces held constant       state.force, inverse_mass */
+    THROUGHPUT_SPRINGS,            /* a chain of N springs: motus's coupled path (scratch)    springs (2D only) */
+    THROUGHPUT_ATTRACTOR,          /* v -= mu*r/|r|^3*h, r from the attractor (a sun)         attractor */
     THROUGHPUT_SCENE_COUNT,
     THROUGHPUT_MEMORY = THROUGHPUT_SCENE_COUNT /* the bandwidth kernels: no scene */
 };
 
 /* How they are stepped. */
 enum {
-    THROUGHPUT_MOTUS,    /* motus_batch_step with exactly the scene's flags: the kernel made for it */
+    THROUGHPUT_MOTUS,    /* motus_step over the structure-of-arrays state, semi-implicit Euler (the fast path:
+                            every stage in registers; springs: the coupled path) */
     THROUGHPUT_HAND,     /* the plain loop a programmer writes for exactly that scene, restrict pointers */
-    THROUGHPUT_GENERAL,  /* motus_batch_step with every other feature on at values that change nothing
-                            (quadratic drag 0, attractor strength 0, bounds at +-1e30): the general kernel,
-                            which computes every term, with the same result */
-    THROUGHPUT_TEXTBOOK, /* gravity + damping: an array of the reference program's particle structs (force,
-                            velocity, position, mass), the force divided by the mass */
-    THROUGHPUT_MOTUS_THREADS, /* motus, one OpenMP parallel region per step, [0, N) split in 2 ranges */
+    THROUGHPUT_GENERAL,  /* motus_step with walls no particle reaches (bounds at +-1e30): what the wall checks
+                            cost, with the same result */
+    THROUGHPUT_TEXTBOOK, /* gravity + damping + walls, the textbook per-particle path: an array of motus_particle
+                            (motus_particle3 in 3D) and per particle motus_particle_clear_forces, _add_force
+                            (the weight), _step, _damp_per_step, _bounce */
+    THROUGHPUT_MOTUS_THREADS, /* motus, one OpenMP parallel region per step, [0, N) split in 2 motus_step_range */
     THROUGHPUT_COPY,     /* memory: dst[i] = src[i] over the bytes a step reads and writes */
     THROUGHPUT_TRIAD,    /* memory: a[i] = b[i] + s*c[i], same bytes */
     THROUGHPUT_RMW,      /* memory: the state arrays read and written in place: the bound of a step */
     THROUGHPUT_RMW_THREADS, /* the same on 2 threads */
     THROUGHPUT_ODEINT_SYMPLECTIC_EULER, /* gravity scene (throughput_odeint.cpp) */
     THROUGHPUT_ODEINT_VELOCITY_VERLET,
+    THROUGHPUT_ODEINT_RUNGE_KUTTA4,
+    THROUGHPUT_TEXTBOOK_HAND, /* the same math as THROUGHPUT_TEXTBOOK over the same structs, written out by hand */
+    /* motus_step with the other methods (THROUGHPUT_MOTUS is semi-implicit Euler): MOTUS_EXPLICIT_EULER + k */
+    THROUGHPUT_MOTUS_EXPLICIT_EULER,
+    THROUGHPUT_MOTUS_POSITION_VERLET,
+    THROUGHPUT_MOTUS_VELOCITY_VERLET,
+    THROUGHPUT_MOTUS_LEAPFROG,
+    THROUGHPUT_MOTUS_MIDPOINT,
+    THROUGHPUT_MOTUS_RK4,
+    THROUGHPUT_MOTUS_FOREST_RUTH,
+    THROUGHPUT_MOTUS_EXACT_LINEAR_DRAG,
     THROUGHPUT_METHOD_COUNT
 };
+/* The motus_method a bench method steps with, or -1 for one that is not motus_step. */
+static inline int throughput_motus_method(int method) {
+    if (method == THROUGHPUT_MOTUS || method == THROUGHPUT_GENERAL || method == THROUGHPUT_MOTUS_THREADS) return 0;
+    if (method >= THROUGHPUT_MOTUS_EXPLICIT_EULER && method <= THROUGHPUT_MOTUS_EXACT_LINEAR_DRAG)
+        return 1 + (method - THROUGHPUT_MOTUS_EXPLICIT_EULER);
+    return -1;
+}
 
 /* The scene's constants (SI units; the reference program's damping and mass). */
 #define THROUGHPUT_DT (1.0 / 60.0)
 #define THROUGHPUT_GX 0.7 /* gravity has a component on every axis, so every velocity component tends to a */
 #define THROUGHPUT_GY -9.81 /* terminal speed under damping or drag instead of decaying into subnormals */
 #define THROUGHPUT_GZ 0.4
-#define THROUGHPUT_DAMPING 0.99
+#define THROUGHPUT_DAMPING 0.01 /* the fraction removed per step (v *= 0.99) */
 #define THROUGHPUT_LINEAR_DRAG 0.5
 #define THROUGHPUT_INVERSE_MASS 0.5 /* mass 2, as the reference program's particle */
 #define THROUGHPUT_SPRING_STIFFNESS 50.0
 #define THROUGHPUT_SPRING_DAMPING 0.05
 #define THROUGHPUT_SPRING_REST_LENGTH 1.0
+#define THROUGHPUT_ATTRACTOR_AT 500.0       /* the attractor sits at (500, 500, 500), inside the start box */
+#define THROUGHPUT_ATTRACTOR_STRENGTH 1.0e5 /* mu, m^3/s^2: about 1 m/s^2 at 300 m */
+#define THROUGHPUT_BOUNDS 1000.0            /* the textbook's walls: [0, 1000) on every axis */
+#define THROUGHPUT_RESTITUTION 0.5
+#define THROUGHPUT_TEXTBOOK_COUNT 5000      /* the textbook per-particle path is compared at this N */
 
 /* The start of particle i, deterministic: component c of 0..2 position, 3..5 velocity, 6..8 force,
    9 inverse mass; in [lo, hi). */

@@ -11,6 +11,9 @@
    which aligns its vector stores to the first position array, finds every array aligned the same way. */
 #define _POSIX_C_SOURCE 200809L /* posix_memalign, clock_gettime under -std=c99 */
 
+/* The engine, static in each of the two precisions of one program. */
+#define MOTUS_IMPLEMENTATION
+#define MOTUS_STATIC
 #include "motus.h"
 #include "throughput.h"
 
@@ -43,67 +46,80 @@
 
 typedef motus_real real;
 
-/* ---- the reference program's particle, as the textbook writes it ---------------------------------- */
-typedef struct vec2 {
-    real x, y;
-} vec2;
-typedef struct vec3 {
-    real x, y, z;
-} vec3;
-typedef struct particle2 {
-    vec2 force, velocity, position;
-    real mass;
-} particle2;
-typedef struct particle3 {
-    vec3 force, velocity, position;
-    real mass;
-} particle3;
-
-static inline vec2 v2(real x, real y) {
-    vec2 v;
-    v.x = x, v.y = y;
-    return v;
+/* ---- the textbook per-particle path ---------------------------------------------------------------
+   What a game written from the textbook does every frame to each of its motus_particle: clear the forces,
+   add the weight, step (semi-implicit Euler), damp, bounce off the walls; against the same math written out
+   by hand over the same structs. The results are summed so that no call can be dropped. */
+static KERNEL int textbook_step2(motus_particle *particles, int n, motus_vec2 weight, motus_real damping,
+                                 motus_vec2 lo, motus_vec2 hi, motus_real restitution, real dt) {
+    int i, bad = 0;
+    for (i = 0; i < n; ++i) {
+        motus_particle *p = &particles[i];
+        bad |= motus_particle_clear_forces(p);
+        bad |= motus_particle_add_force(p, weight);
+        bad |= motus_particle_step(p, dt);
+        bad |= motus_particle_damp_per_step(p, damping);
+        bad |= motus_particle_bounce(p, lo, hi, restitution);
+    }
+    return bad;
 }
-static inline vec2 v2_add(vec2 a, vec2 b) { return v2(a.x + b.x, a.y + b.y); }
-static inline vec2 v2_scale(vec2 a, real s) { return v2(a.x * s, a.y * s); }
-static inline vec2 v2_div(vec2 a, real s) { return v2(a.x / s, a.y / s); }
-static inline vec3 v3(real x, real y, real z) {
-    vec3 v;
-    v.x = x, v.y = y, v.z = z;
-    return v;
+static KERNEL int textbook_step3(motus_particle3 *particles, int n, motus_vec3 weight, motus_real damping,
+                                 motus_vec3 lo, motus_vec3 hi, motus_real restitution, real dt) {
+    int i, bad = 0;
+    for (i = 0; i < n; ++i) {
+        motus_particle3 *p = &particles[i];
+        bad |= motus_particle3_clear_forces(p);
+        bad |= motus_particle3_add_force(p, weight);
+        bad |= motus_particle3_step(p, dt);
+        bad |= motus_particle3_damp_per_step(p, damping);
+        bad |= motus_particle3_bounce(p, lo, hi, restitution);
+    }
+    return bad;
 }
-static inline vec3 v3_add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
-static inline vec3 v3_scale(vec3 a, real s) { return v3(a.x * s, a.y * s, a.z * s); }
-static inline vec3 v3_div(vec3 a, real s) { return v3(a.x / s, a.y / s, a.z / s); }
-
-/* The reference program's frame with gravity: clear the force, add the weight m*g, v += F/m*dt,
-   x += v*dt, v *= DAMPING. */
-static KERNEL void textbook_step2(particle2 *particles, int n, vec2 gravity, real damping, real dt) {
+/* One wall pair, as motus_particle_bounce: mirror back inside, reverse and scale that velocity component. */
+static inline void hand_wall(real *x, real *v, real lo, real hi, real bounce) {
+    if (*x < lo) *x = lo + (lo - *x), *v = *v * bounce;
+    if (*x > hi) *x = hi - (*x - hi), *v = *v * bounce;
+    if (*x < lo) *x = lo;
+    if (*x > hi) *x = hi;
+}
+static KERNEL void textbook_hand2(motus_particle *particles, int n, motus_vec2 weight, real kept, real lo, real hi,
+                                  real bounce, real dt) {
     int i;
     for (i = 0; i < n; ++i) {
-        particle2 *p = &particles[i];
-        p->force = v2(0, 0);
-        p->force = v2_add(p->force, v2_scale(gravity, p->mass));
-        p->velocity = v2_add(p->velocity, v2_scale(v2_div(p->force, p->mass), dt));
-        p->position = v2_add(p->position, v2_scale(p->velocity, dt));
-        p->velocity = v2_scale(p->velocity, damping);
+        motus_particle *p = &particles[i];
+        p->force.x = 0 + weight.x, p->force.y = 0 + weight.y;
+        p->velocity.x = p->velocity.x + p->force.x * p->inverse_mass * dt;
+        p->velocity.y = p->velocity.y + p->force.y * p->inverse_mass * dt;
+        p->position.x = p->position.x + p->velocity.x * dt;
+        p->position.y = p->position.y + p->velocity.y * dt;
+        p->velocity.x = p->velocity.x * kept, p->velocity.y = p->velocity.y * kept;
+        hand_wall(&p->position.x, &p->velocity.x, lo, hi, bounce);
+        hand_wall(&p->position.y, &p->velocity.y, lo, hi, bounce);
     }
 }
-static KERNEL void textbook_step3(particle3 *particles, int n, vec3 gravity, real damping, real dt) {
+static KERNEL void textbook_hand3(motus_particle3 *particles, int n, motus_vec3 weight, real kept, real lo, real hi,
+                                  real bounce, real dt) {
     int i;
     for (i = 0; i < n; ++i) {
-        particle3 *p = &particles[i];
-        p->force = v3(0, 0, 0);
-        p->force = v3_add(p->force, v3_scale(gravity, p->mass));
-        p->velocity = v3_add(p->velocity, v3_scale(v3_div(p->force, p->mass), dt));
-        p->position = v3_add(p->position, v3_scale(p->velocity, dt));
-        p->velocity = v3_scale(p->velocity, damping);
+        motus_particle3 *p = &particles[i];
+        p->force.x = 0 + weight.x, p->force.y = 0 + weight.y, p->force.z = 0 + weight.z;
+        p->velocity.x = p->velocity.x + p->force.x * p->inverse_mass * dt;
+        p->velocity.y = p->velocity.y + p->force.y * p->inverse_mass * dt;
+        p->velocity.z = p->velocity.z + p->force.z * p->inverse_mass * dt;
+        p->position.x = p->position.x + p->velocity.x * dt;
+        p->position.y = p->position.y + p->velocity.y * dt;
+        p->position.z = p->position.z + p->velocity.z * dt;
+        p->velocity.x = p->velocity.x * kept, p->velocity.y = p->velocity.y * kept, p->velocity.z = p->velocity.z * kept;
+        hand_wall(&p->position.x, &p->velocity.x, lo, hi, bounce);
+        hand_wall(&p->position.y, &p->velocity.y, lo, hi, bounce);
+        hand_wall(&p->position.z, &p->velocity.z, lo, hi, bounce);
     }
 }
 
 /* ---- the hand-written loops: exactly the scene, the operations in motus's order ------------------------
-   Per particle (see motus.h, "Batch kernels"): a = F*inverse_mass + g - k*v; v += a*h; x += v*h;
-   v *= damping. A term the scene lacks is simply not written. */
+   Per particle (semi-implicit Euler): a = F*inverse_mass + g - k*v; v += a*h; x += v*h; v *= 1 - damping
+   (kept). A term the scene lacks is simply not written. */
 static KERNEL void hand_drift2(int n, real *restrict x, real *restrict y, const real *restrict vx,
                                const real *restrict vy, real h) {
     int i;
@@ -148,28 +164,28 @@ static KERNEL void hand_gravity3(int n, real *restrict x, real *restrict y, real
 }
 
 static KERNEL void hand_gravity_damping2(int n, real *restrict x, real *restrict y, real *restrict vx,
-                                         real *restrict vy, real gx, real gy, real damping, real h) {
+                                         real *restrict vy, real gx, real gy, real kept, real h) {
     int i;
     for (i = 0; i < n; ++i) {
         const real ux = vx[i] + gx * h, uy = vy[i] + gy * h;
         x[i] = x[i] + ux * h;
         y[i] = y[i] + uy * h;
-        vx[i] = ux * damping;
-        vy[i] = uy * damping;
+        vx[i] = ux * kept;
+        vy[i] = uy * kept;
     }
 }
 static KERNEL void hand_gravity_damping3(int n, real *restrict x, real *restrict y, real *restrict z,
                                          real *restrict vx, real *restrict vy, real *restrict vz, real gx, real gy,
-                                         real gz, real damping, real h) {
+                                         real gz, real kept, real h) {
     int i;
     for (i = 0; i < n; ++i) {
         const real ux = vx[i] + gx * h, uy = vy[i] + gy * h, uz = vz[i] + gz * h;
         x[i] = x[i] + ux * h;
         y[i] = y[i] + uy * h;
         z[i] = z[i] + uz * h;
-        vx[i] = ux * damping;
-        vy[i] = uy * damping;
-        vz[i] = uz * damping;
+        vx[i] = ux * kept;
+        vy[i] = uy * kept;
+        vz[i] = uz * kept;
     }
 }
 
@@ -230,8 +246,37 @@ static KERNEL void hand_mass_forces3(int n, real *restrict x, real *restrict y, 
     }
 }
 
+/* a = -mu*r/|r|^3, r = x - c. */
+static KERNEL void hand_attractor2(int n, real *restrict x, real *restrict y, real *restrict vx, real *restrict vy,
+                                   real c, real mu, real h) {
+    int i;
+    for (i = 0; i < n; ++i) {
+        const real dx = x[i] - c, dy = y[i] - c, r2 = dx * dx + dy * dy, s = mu / (r2 * MOTUS_SQRT(r2));
+        const real ux = vx[i] - dx * s * h, uy = vy[i] - dy * s * h;
+        x[i] = x[i] + ux * h;
+        y[i] = y[i] + uy * h;
+        vx[i] = ux;
+        vy[i] = uy;
+    }
+}
+static KERNEL void hand_attractor3(int n, real *restrict x, real *restrict y, real *restrict z, real *restrict vx,
+                                   real *restrict vy, real *restrict vz, real c, real mu, real h) {
+    int i;
+    for (i = 0; i < n; ++i) {
+        const real dx = x[i] - c, dy = y[i] - c, dz = z[i] - c, r2 = dx * dx + dy * dy + dz * dz;
+        const real s = mu / (r2 * MOTUS_SQRT(r2));
+        const real ux = vx[i] - dx * s * h, uy = vy[i] - dy * s * h, uz = vz[i] - dz * s * h;
+        x[i] = x[i] + ux * h;
+        y[i] = y[i] + uy * h;
+        z[i] = z[i] + uz * h;
+        vx[i] = ux;
+        vy[i] = uy;
+        vz[i] = uz;
+    }
+}
+
 /* Springs: clear the forces, sum every spring's Hooke + damping force into both ends (the formula of
-   motus__spring_force, same operations), then the semi-implicit Euler step with a uniform inverse mass. */
+   motus.h's spring, written the plain way), then the semi-implicit Euler step with a uniform inverse mass. */
 static KERNEL void hand_springs2(int n, const motus_spring *restrict springs, int spring_count, real *restrict x,
                                  real *restrict y, real *restrict vx, real *restrict vy, real *restrict fx,
                                  real *restrict fy, real inverse_mass, real h) {
@@ -269,19 +314,9 @@ static KERNEL void hand_springs2(int n, const motus_spring *restrict springs, in
 }
 
 /* ---- motus ---------------------------------------------------------------------------------------- */
-static KERNEL motus_result motus_step(const motus_scene *scene, const motus_batch *batch, int n, real dt) {
-    return motus_batch_step(scene, batch, 0, n, dt);
-}
-
-/* The user's part of a spring step (clear the forces) and motus's two calls. */
-static KERNEL motus_result motus_springs_step(const motus_scene *scene, const motus_batch *batch, int n,
-                                              const motus_spring *springs, int spring_count, real dt) {
-    motus_result result;
-    memset(batch->force[0], 0, sizeof(real) * (size_t)n);
-    memset(batch->force[1], 0, sizeof(real) * (size_t)n);
-    result = motus_batch_add_spring_forces(batch, n, springs, spring_count);
-    if (result != MOTUS_OK) return result;
-    return motus_batch_step(scene, batch, 0, n, dt);
+static KERNEL motus_result step_motus(const motus_scene *scene, const motus_state *state, real dt, void *scratch,
+                                      size_t scratch_bytes) {
+    return motus_step(scene, state, dt, scratch, scratch_bytes);
 }
 
 #ifdef _OPENMP
@@ -297,7 +332,7 @@ static void thread_range(int n, int t, int threads, int *first, int *count) {
 
 /* One OpenMP parallel region per step, as a game hands a frame's work to its threads: each thread steps
    its range through the range API. */
-static KERNEL motus_result motus_threads_step(const motus_scene *scene, const motus_batch *batch, int n, real dt) {
+static KERNEL motus_result motus_threads_step(const motus_scene *scene, const motus_state *state, int n, real dt) {
     motus_result result = MOTUS_OK;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(2)
@@ -305,14 +340,14 @@ static KERNEL motus_result motus_threads_step(const motus_scene *scene, const mo
         int first, count;
         motus_result mine;
         thread_range(n, omp_get_thread_num(), omp_get_num_threads(), &first, &count);
-        mine = motus_batch_step(scene, batch, first, count, dt);
+        mine = motus_step_range(scene, state, first, count, dt);
         if (mine != MOTUS_OK) {
 #pragma omp critical(throughput_result)
             result = mine;
         }
     }
 #else
-    (void)scene, (void)batch, (void)n, (void)dt;
+    (void)scene, (void)state, (void)n, (void)dt;
     result = MOTUS_ERROR_UNSUPPORTED;
 #endif
     return result;
@@ -372,12 +407,14 @@ static KERNEL void rmw_threads(int dims, int n, real *const *position, real *con
 typedef struct work {
     int dims, n;
     real *position[3], *velocity[3], *force[3], *inverse_mass;
-    void *textbook;     /* n particle2 or particle3 */
+    void *textbook;     /* n motus_particle or motus_particle3 */
     real *scratch;      /* 2*S values: copy source and destination; the three triad arrays */
     size_t state_count; /* S = 2*dims*n */
     motus_spring *springs; /* n springs: a chain hung from an anchor (2D) */
     motus_scene scene;  /* of the current scene and method */
-    motus_batch batch;
+    motus_state state;
+    void *motus_scratch; /* motus_scratch_size() bytes for the springs (malloc, grown when a method needs more) */
+    size_t motus_scratch_bytes;
     real dt, zero;      /* zero: a run-time 0 the memory kernels add, so the compiler cannot drop the work */
     void *blocks[16];
     int block_count;
@@ -396,6 +433,7 @@ void NAME(throughput_close)(void *opaque) {
     int i;
     if (!w) return;
     for (i = 0; i < w->block_count; ++i) free(w->blocks[i]);
+    free(w->motus_scratch);
     free(w);
 }
 
@@ -417,7 +455,7 @@ void *NAME(throughput_open)(int dims, int n) {
         ok &= (w->force[d] = (real *)work_alloc(w, sizeof(real) * count)) != NULL;
     }
     ok &= (w->inverse_mass = (real *)work_alloc(w, sizeof(real) * count)) != NULL;
-    ok &= (w->textbook = work_alloc(w, (dims == 2 ? sizeof(particle2) : sizeof(particle3)) * count)) != NULL;
+    ok &= (w->textbook = work_alloc(w, (dims == 2 ? sizeof(motus_particle) : sizeof(motus_particle3)) * count)) != NULL;
     ok &= (w->scratch = (real *)work_alloc(w, sizeof(real) * 2 * w->state_count)) != NULL;
     if (dims == 2) {
         ok &= (w->springs = (motus_spring *)work_alloc(w, sizeof(motus_spring) * count)) != NULL;
@@ -427,7 +465,7 @@ void *NAME(throughput_open)(int dims, int n) {
                 motus_spring *s = &w->springs[i];
                 s->a = i;
                 s->b = i - 1; /* spring 0 hangs particle 0 from the anchor */
-                s->anchor = motus_v2((real)-THROUGHPUT_SPRING_REST_LENGTH, 0);
+                s->anchor = motus_v3((real)-THROUGHPUT_SPRING_REST_LENGTH, 0, 0);
                 s->rest_length = (real)THROUGHPUT_SPRING_REST_LENGTH;
                 s->stiffness = (real)THROUGHPUT_SPRING_STIFFNESS;
                 s->damping = (real)THROUGHPUT_SPRING_DAMPING;
@@ -443,13 +481,23 @@ void *NAME(throughput_open)(int dims, int n) {
 
 int NAME(throughput_supported)(const void *opaque, int scene, int method) {
     const work *w = (const work *)opaque;
-    switch (method) {
-    case THROUGHPUT_MOTUS:
-    case THROUGHPUT_HAND:
-    case THROUGHPUT_GENERAL: return scene < THROUGHPUT_SCENE_COUNT && (scene != THROUGHPUT_SPRINGS || w->dims == 2);
-    case THROUGHPUT_TEXTBOOK: return scene == THROUGHPUT_GRAVITY_DAMPING;
+    const int integrator = throughput_motus_method(method);
+    if (method == THROUGHPUT_MOTUS_THREADS) {
 #ifdef _OPENMP
-    case THROUGHPUT_MOTUS_THREADS: return scene == THROUGHPUT_GRAVITY_DAMPING;
+        return scene == THROUGHPUT_GRAVITY_DAMPING;
+#else
+        return 0;
+#endif
+    }
+    if (integrator >= 0 || method == THROUGHPUT_HAND) {
+        if (scene >= THROUGHPUT_SCENE_COUNT || (scene == THROUGHPUT_SPRINGS && w->dims != 2)) return 0;
+        /* The exact stepper takes no spring and no attractor (MOTUS_ERROR_UNSUPPORTED). */
+        return integrator != MOTUS_EXACT_LINEAR_DRAG || (scene != THROUGHPUT_SPRINGS && scene != THROUGHPUT_ATTRACTOR);
+    }
+    switch (method) {
+    case THROUGHPUT_TEXTBOOK:
+    case THROUGHPUT_TEXTBOOK_HAND: return scene == THROUGHPUT_GRAVITY_DAMPING;
+#ifdef _OPENMP
     case THROUGHPUT_RMW_THREADS: return scene == THROUGHPUT_MEMORY;
 #endif
     case THROUGHPUT_COPY:
@@ -459,51 +507,53 @@ int NAME(throughput_supported)(const void *opaque, int scene, int method) {
     }
 }
 
-static unsigned scene_has(int scene) {
-    switch (scene) {
-    case THROUGHPUT_GRAVITY: return MOTUS_HAS_GRAVITY;
-    case THROUGHPUT_GRAVITY_DAMPING: return MOTUS_HAS_GRAVITY | MOTUS_HAS_DAMPING_PER_STEP;
-    case THROUGHPUT_GRAVITY_LINEAR_DRAG: return MOTUS_HAS_GRAVITY | MOTUS_HAS_LINEAR_DRAG;
-    case THROUGHPUT_MASS_FORCES: return MOTUS_HAS_PARTICLE_MASS | MOTUS_HAS_FORCES;
-    case THROUGHPUT_SPRINGS: return MOTUS_HAS_FORCES;
-    default: return 0;
-    }
-}
-
-/* The motus scene and batch of (scene, method); nothing in the arrays changes. */
+/* The motus scene and state of (scene, method); nothing in the arrays changes. */
 void NAME(throughput_configure)(void *opaque, int scene, int method) {
     work *w = (work *)opaque;
+    const int integrator = throughput_motus_method(method);
     int d;
     memset(&w->scene, 0, sizeof w->scene);
-    w->scene.has = scene_has(scene);
-    w->scene.method = MOTUS_SEMI_IMPLICIT_EULER;
-    w->scene.gravity[0] = (real)THROUGHPUT_GX;
-    w->scene.gravity[1] = (real)THROUGHPUT_GY;
-    w->scene.gravity[2] = (real)THROUGHPUT_GZ;
-    w->scene.linear_drag = (real)THROUGHPUT_LINEAR_DRAG;
-    w->scene.damping = (real)THROUGHPUT_DAMPING;
-    w->scene.inverse_mass = (real)THROUGHPUT_INVERSE_MASS;
-    if (method == THROUGHPUT_GENERAL) {
-        /* Every feature on, with values that change nothing: quadratic drag 0, an attractor of strength 0
-           and walls no particle reaches. Quadratic drag and the attractor make motus pick its general kernel,
-           which computes every term; the motion is the scene's. */
-        w->scene.has |= MOTUS_HAS_QUADRATIC_DRAG | MOTUS_HAS_ATTRACTOR | MOTUS_HAS_BOUNDS;
-        w->scene.quadratic_drag = 0;
-        w->scene.attractor_strength = 0;
-        for (d = 0; d < 3; ++d) {
-            w->scene.bounds_min[d] = (real)-1e30;
-            w->scene.bounds_max[d] = (real)1e30;
-        }
+    w->scene.method = (motus_method)(integrator > 0 ? integrator : 0);
+    w->scene.mass = (real)(1.0 / THROUGHPUT_INVERSE_MASS);
+    if (scene != THROUGHPUT_DRIFT && scene != THROUGHPUT_MASS_FORCES && scene != THROUGHPUT_SPRINGS &&
+        scene != THROUGHPUT_ATTRACTOR)
+        w->scene.gravity = motus_v3((real)THROUGHPUT_GX, (real)THROUGHPUT_GY, (real)THROUGHPUT_GZ);
+    if (scene == THROUGHPUT_GRAVITY_DAMPING) w->scene.damping_per_step = (real)THROUGHPUT_DAMPING;
+    if (scene == THROUGHPUT_GRAVITY_LINEAR_DRAG) w->scene.linear_drag = (real)THROUGHPUT_LINEAR_DRAG;
+    if (scene == THROUGHPUT_ATTRACTOR) {
+        const real c = (real)THROUGHPUT_ATTRACTOR_AT;
+        w->scene.attractor = motus_v3(c, c, c);
+        w->scene.attractor_strength = (real)THROUGHPUT_ATTRACTOR_STRENGTH;
+    }
+    if (scene == THROUGHPUT_SPRINGS && w->springs) {
+        w->scene.springs = w->springs;
+        w->scene.spring_count = w->n;
+    }
+    if (method == THROUGHPUT_GENERAL) { /* walls no particle reaches: the wall checks run, nothing bounces */
+        w->scene.bounds_min = motus_v3((real)-1e30, (real)-1e30, (real)-1e30);
+        w->scene.bounds_max = motus_v3((real)1e30, (real)1e30, (real)1e30);
         w->scene.restitution = 1;
     }
-    memset(&w->batch, 0, sizeof w->batch);
-    w->batch.dimensions = w->dims;
+    memset(&w->state, 0, sizeof w->state);
+    w->state.dimensions = w->dims;
+    w->state.count = w->n;
     for (d = 0; d < w->dims; ++d) {
-        w->batch.position[d] = w->position[d];
-        w->batch.velocity[d] = w->velocity[d];
-        if (w->scene.has & MOTUS_HAS_FORCES) w->batch.force[d] = w->force[d];
+        w->state.position[d] = w->position[d];
+        w->state.velocity[d] = w->velocity[d];
+        if (scene == THROUGHPUT_MASS_FORCES) w->state.force[d] = w->force[d];
     }
-    if (w->scene.has & MOTUS_HAS_PARTICLE_MASS) w->batch.inverse_mass = w->inverse_mass;
+    if (scene == THROUGHPUT_MASS_FORCES) w->state.inverse_mass = w->inverse_mass;
+    if (integrator >= 0) {
+        const size_t bytes = motus_scratch_size(&w->scene, &w->state);
+        if (bytes != (size_t)-1 && bytes > w->motus_scratch_bytes) {
+            void *grown = NULL;
+            if (posix_memalign(&grown, 64, bytes) == 0) {
+                free(w->motus_scratch);
+                w->motus_scratch = grown;
+                w->motus_scratch_bytes = bytes;
+            }
+        }
+    }
 }
 
 void NAME(throughput_reset)(void *opaque, int scene, int method) {
@@ -515,21 +565,20 @@ void NAME(throughput_reset)(void *opaque, int scene, int method) {
         for (i = 0; (size_t)i < 2 * w->state_count; ++i) w->scratch[i] = (real)(1 + (i & 1023));
         return;
     }
-    if (method == THROUGHPUT_TEXTBOOK) {
+    if (method == THROUGHPUT_TEXTBOOK || method == THROUGHPUT_TEXTBOOK_HAND) {
         const real mass = (real)(1.0 / THROUGHPUT_INVERSE_MASS);
         for (i = 0; i < n; ++i) {
             if (dims == 2) {
-                particle2 *p = (particle2 *)w->textbook + i;
-                p->force = v2(0, 0);
-                p->position = v2((real)throughput_start(i, 0), (real)throughput_start(i, 1));
-                p->velocity = v2((real)throughput_start(i, 3), (real)throughput_start(i, 4));
-                p->mass = mass;
+                motus_particle *p = (motus_particle *)w->textbook + i;
+                memset(p, 0, sizeof *p);
+                motus_particle_init(p, motus_v2((real)throughput_start(i, 0), (real)throughput_start(i, 1)), mass);
+                p->velocity = motus_v2((real)throughput_start(i, 3), (real)throughput_start(i, 4));
             } else {
-                particle3 *p = (particle3 *)w->textbook + i;
-                p->force = v3(0, 0, 0);
-                p->position = v3((real)throughput_start(i, 0), (real)throughput_start(i, 1), (real)throughput_start(i, 2));
-                p->velocity = v3((real)throughput_start(i, 3), (real)throughput_start(i, 4), (real)throughput_start(i, 5));
-                p->mass = mass;
+                motus_particle3 *p = (motus_particle3 *)w->textbook + i;
+                memset(p, 0, sizeof *p);
+                motus_particle3_init(p, motus_v3((real)throughput_start(i, 0), (real)throughput_start(i, 1),
+                                                 (real)throughput_start(i, 2)), mass);
+                p->velocity = motus_v3((real)throughput_start(i, 3), (real)throughput_start(i, 4), (real)throughput_start(i, 5));
             }
         }
         return;
@@ -569,20 +618,34 @@ int NAME(throughput_run)(void *opaque, int scene, int method, int steps) {
     work *w = (work *)opaque;
     const int n = w->n;
     const real h = w->dt, g[3] = {(real)THROUGHPUT_GX, (real)THROUGHPUT_GY, (real)THROUGHPUT_GZ};
-    const real damping = w->scene.damping, drag = w->scene.linear_drag, inverse_mass = w->scene.inverse_mass;
+    const real damping = (real)THROUGHPUT_DAMPING, kept = 1 - damping, drag = (real)THROUGHPUT_LINEAR_DRAG;
+    const real inverse_mass = (real)THROUGHPUT_INVERSE_MASS, mass = 1 / inverse_mass;
+    const real c = (real)THROUGHPUT_ATTRACTOR_AT, mu = (real)THROUGHPUT_ATTRACTOR_STRENGTH;
+    const real lo = 0, hi = (real)THROUGHPUT_BOUNDS, restitution = (real)THROUGHPUT_RESTITUTION;
     real *const *x = w->position, *const *v = w->velocity, *const *f = w->force;
     const int three = w->dims == 3;
     int s, failed = 0;
+    if (throughput_motus_method(method) >= 0 && method != THROUGHPUT_MOTUS_THREADS) {
+        REPEAT_MOTUS(step_motus(&w->scene, &w->state, h, w->motus_scratch, w->motus_scratch_bytes));
+        return failed;
+    }
     switch (method) {
-    case THROUGHPUT_MOTUS:
-    case THROUGHPUT_GENERAL:
-        if (scene == THROUGHPUT_SPRINGS) REPEAT_MOTUS(motus_springs_step(&w->scene, &w->batch, n, w->springs, n, h));
-        else REPEAT_MOTUS(motus_step(&w->scene, &w->batch, n, h));
-        break;
-    case THROUGHPUT_MOTUS_THREADS: REPEAT_MOTUS(motus_threads_step(&w->scene, &w->batch, n, h)); break;
+    case THROUGHPUT_MOTUS_THREADS: REPEAT_MOTUS(motus_threads_step(&w->scene, &w->state, n, h)); break;
     case THROUGHPUT_TEXTBOOK:
-        if (three) REPEAT(textbook_step3((particle3 *)w->textbook, n, v3(g[0], g[1], g[2]), damping, h));
-        else REPEAT(textbook_step2((particle2 *)w->textbook, n, v2(g[0], g[1]), damping, h));
+        if (three)
+            REPEAT_MOTUS(textbook_step3((motus_particle3 *)w->textbook, n, motus_v3(g[0] * mass, g[1] * mass, g[2] * mass),
+                                        damping, motus_v3(lo, lo, lo), motus_v3(hi, hi, hi), restitution, h));
+        else
+            REPEAT_MOTUS(textbook_step2((motus_particle *)w->textbook, n, motus_v2(g[0] * mass, g[1] * mass), damping,
+                                        motus_v2(lo, lo), motus_v2(hi, hi), restitution, h));
+        break;
+    case THROUGHPUT_TEXTBOOK_HAND:
+        if (three)
+            REPEAT(textbook_hand3((motus_particle3 *)w->textbook, n, motus_v3(g[0] * mass, g[1] * mass, g[2] * mass),
+                                  kept, lo, hi, -restitution, h));
+        else
+            REPEAT(textbook_hand2((motus_particle *)w->textbook, n, motus_v2(g[0] * mass, g[1] * mass), kept, lo, hi,
+                                  -restitution, h));
         break;
     case THROUGHPUT_HAND:
         switch (scene) {
@@ -595,8 +658,8 @@ int NAME(throughput_run)(void *opaque, int scene, int method, int steps) {
             else REPEAT(hand_gravity2(n, x[0], x[1], v[0], v[1], g[0], g[1], h));
             break;
         case THROUGHPUT_GRAVITY_DAMPING:
-            if (three) REPEAT(hand_gravity_damping3(n, x[0], x[1], x[2], v[0], v[1], v[2], g[0], g[1], g[2], damping, h));
-            else REPEAT(hand_gravity_damping2(n, x[0], x[1], v[0], v[1], g[0], g[1], damping, h));
+            if (three) REPEAT(hand_gravity_damping3(n, x[0], x[1], x[2], v[0], v[1], v[2], g[0], g[1], g[2], kept, h));
+            else REPEAT(hand_gravity_damping2(n, x[0], x[1], v[0], v[1], g[0], g[1], kept, h));
             break;
         case THROUGHPUT_GRAVITY_LINEAR_DRAG:
             if (three) REPEAT(hand_gravity_drag3(n, x[0], x[1], x[2], v[0], v[1], v[2], g[0], g[1], g[2], drag, h));
@@ -609,6 +672,10 @@ int NAME(throughput_run)(void *opaque, int scene, int method, int steps) {
             break;
         case THROUGHPUT_SPRINGS:
             REPEAT(hand_springs2(n, w->springs, n, x[0], x[1], v[0], v[1], f[0], f[1], inverse_mass, h));
+            break;
+        case THROUGHPUT_ATTRACTOR:
+            if (three) REPEAT(hand_attractor3(n, x[0], x[1], x[2], v[0], v[1], v[2], c, mu, h));
+            else REPEAT(hand_attractor2(n, x[0], x[1], v[0], v[1], c, mu, h));
             break;
         default: return MOTUS_ERROR_UNSUPPORTED;
         }
@@ -633,12 +700,12 @@ void NAME(throughput_read)(const void *opaque, int scene, int method, int i, dou
     const work *w = (const work *)opaque;
     int d;
     (void)scene;
-    if (method == THROUGHPUT_TEXTBOOK) {
+    if (method == THROUGHPUT_TEXTBOOK || method == THROUGHPUT_TEXTBOOK_HAND) {
         if (w->dims == 2) {
-            const particle2 *p = (const particle2 *)w->textbook + i;
+            const motus_particle *p = (const motus_particle *)w->textbook + i;
             out[0] = p->position.x, out[1] = p->position.y, out[2] = p->velocity.x, out[3] = p->velocity.y;
         } else {
-            const particle3 *p = (const particle3 *)w->textbook + i;
+            const motus_particle3 *p = (const motus_particle3 *)w->textbook + i;
             out[0] = p->position.x, out[1] = p->position.y, out[2] = p->position.z;
             out[3] = p->velocity.x, out[4] = p->velocity.y, out[5] = p->velocity.z;
         }
@@ -663,8 +730,8 @@ long NAME(throughput_subnormals)(const void *opaque, int scene, int method) {
     int d;
     (void)scene;
     if (method == THROUGHPUT_COPY || method == THROUGHPUT_TRIAD) return count_subnormals(w->scratch, 2 * w->state_count);
-    if (method == THROUGHPUT_TEXTBOOK) {
-        const size_t values = (w->dims == 2 ? sizeof(particle2) : sizeof(particle3)) / sizeof(real);
+    if (method == THROUGHPUT_TEXTBOOK || method == THROUGHPUT_TEXTBOOK_HAND) {
+        const size_t values = (w->dims == 2 ? sizeof(motus_particle) : sizeof(motus_particle3)) / sizeof(real);
         return count_subnormals((const real *)w->textbook, values * (size_t)w->n);
     }
     for (d = 0; d < w->dims; ++d) {

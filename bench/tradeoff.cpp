@@ -11,7 +11,7 @@
 // problem once, over at least S seconds of stepping (default 0.02: the run is repeated, resets untimed)
 // after a warm-up run. Cost to reach the duration at a given dt is then ns per particle-step x steps.
 // Kepler energy: K orbits (default 1000) of kepler_eccentric at dt = 1/60 s. --quick: a smoke run in
-// seconds (5 time steps, N = 256, 3 rounds, 20 orbits).
+// seconds (5 time steps, N = 64, 2 rounds, 20 orbits).
 //
 // Writes into DIR (default tradeoff-out): tradeoff.csv (one row per method x precision x problem x dt),
 // tradeoff_ratios.csv (cost ratio motus/peer at every error level), tradeoff.md (the tables, also printed on
@@ -46,11 +46,10 @@ namespace {
 
 // ---- what is run -------------------------------------------------------------------------------------
 struct line {
-    std::string name;    // "rk4", "velocity_verlet+reuse", "odeint runge_kutta4", "gsl rk8pd"
+    std::string name;    // "rk4", "odeint runge_kutta4", "gsl rk8pd"
     std::string library; // motus, odeint, gsl
     bool single = false; // float (motus_real float, odeint over float)
     int method = -1;     // motus_method, or -1
-    unsigned flags = 0;  // MOTUS_STEPPER_* flags
     int peer = -1;       // PEER_*, or -1
     int order = 0;
     int style = 0;        // gnuplot line style (one colour per algorithm; see bench/plot_tradeoff.gp)
@@ -67,7 +66,7 @@ enum { STYLE_EXPLICIT_EULER = 1, STYLE_SEMI_IMPLICIT_EULER, STYLE_POSITION_VERLE
 std::vector<line> make_lines() {
     struct motus_entry {
         int method;
-        unsigned flags;
+        int flags; // unused (the old stepper's flags are gone)
         int style;
         bool plotted;
     };
@@ -76,9 +75,7 @@ std::vector<line> make_lines() {
         {MOTUS_SEMI_IMPLICIT_EULER, 0, STYLE_SEMI_IMPLICIT_EULER, true},
         {MOTUS_POSITION_VERLET, 0, STYLE_POSITION_VERLET, true},
         {MOTUS_VELOCITY_VERLET, 0, STYLE_VELOCITY_VERLET, true},
-        {MOTUS_VELOCITY_VERLET, MOTUS_STEPPER_REUSE_FORCES, STYLE_VELOCITY_VERLET_REUSE, true},
         {MOTUS_LEAPFROG, 0, STYLE_LEAPFROG, false},
-        {MOTUS_LEAPFROG, MOTUS_STEPPER_REUSE_FORCES, STYLE_LEAPFROG_REUSE, false},
         {MOTUS_MIDPOINT, 0, STYLE_MIDPOINT, true},
         {MOTUS_RK4, 0, STYLE_RK4, true},
         {MOTUS_FOREST_RUTH, 0, STYLE_FOREST_RUTH, true},
@@ -92,11 +89,9 @@ std::vector<line> make_lines() {
         for (const motus_entry &m : motus_methods) {
             line l;
             l.name = motus_method_name((motus_method)m.method);
-            if (m.flags & MOTUS_STEPPER_REUSE_FORCES) l.name += "+reuse";
             l.library = "motus";
             l.single = single;
             l.method = m.method;
-            l.flags = m.flags;
             l.peer = -1;
             l.order = motus_method_order((motus_method)m.method);
             l.style = m.style;
@@ -110,7 +105,6 @@ std::vector<line> make_lines() {
             l.library = l.name.substr(0, l.name.find(' '));
             l.single = single;
             l.method = -1;
-            l.flags = 0;
             l.peer = peer;
             l.order = tradeoff_peer_order(peer);
             l.style = peer_style[peer];
@@ -121,13 +115,11 @@ std::vector<line> make_lines() {
     return lines;
 }
 
-bool velocity_dependent(const problem &p) { return p.forces.linear_drag != 0 || p.forces.quadratic_drag != 0; }
+bool velocity_dependent(const problem &p) { return p.scene.linear_drag != 0 || p.scene.quadratic_drag != 0; }
 
 // Why a method does not run on a problem, or NULL if it does. The motus exact stepper is not listed: motus
 // itself answers MOTUS_ERROR_UNSUPPORTED for it.
 const char *not_applicable(const line &l, const problem &p) {
-    if (l.motus() && (l.flags & MOTUS_STEPPER_REUSE_FORCES) && velocity_dependent(p))
-        return "reusing the last acceleration is only valid for forces of position only";
     if ((l.peer == PEER_ODEINT_SYMPLECTIC_EULER || l.peer == PEER_ODEINT_MCLACHLAN) && velocity_dependent(p))
         return "odeint's symplectic steppers take q'' = f(q): no velocity-dependent force";
     return NULL;
@@ -154,15 +146,15 @@ int steps_for(const problem &p, double dt) { return (int)std::ceil(p.duration / 
 
 int run_trajectory(const line &l, int which, double dt, int steps, int count, double *trajectory, double *evaluations) {
     if (l.motus())
-        return l.single ? tradeoff_motus_trajectory_float(l.method, l.flags, which, dt, steps, count, trajectory, evaluations)
-                        : tradeoff_motus_trajectory_double(l.method, l.flags, which, dt, steps, count, trajectory, evaluations);
+        return l.single ? tradeoff_motus_trajectory_float(l.method, which, dt, steps, count, trajectory, evaluations)
+                        : tradeoff_motus_trajectory_double(l.method, which, dt, steps, count, trajectory, evaluations);
     return tradeoff_peer_trajectory(l.peer, l.single, which, dt, steps, count, trajectory, evaluations);
 }
 
 double run_timing(const line &l, int which, double dt, int steps, int count, int repetitions, double seconds) {
     if (l.motus())
-        return l.single ? tradeoff_motus_time_float(l.method, l.flags, which, dt, steps, count, repetitions, seconds)
-                        : tradeoff_motus_time_double(l.method, l.flags, which, dt, steps, count, repetitions, seconds);
+        return l.single ? tradeoff_motus_time_float(l.method, which, dt, steps, count, repetitions, seconds)
+                        : tradeoff_motus_time_double(l.method, which, dt, steps, count, repetitions, seconds);
     return tradeoff_peer_time(l.peer, l.single, which, dt, steps, count, repetitions, seconds);
 }
 
@@ -303,7 +295,7 @@ int main(int argc, char **argv) {
             return 2;
         }
     }
-    if (opt.quick) opt.particles = std::min(opt.particles, 256), opt.repetitions = std::min(opt.repetitions, 3),
+    if (opt.quick) opt.particles = std::min(opt.particles, 64), opt.repetitions = std::min(opt.repetitions, 2),
                    opt.orbits = std::min(opt.orbits, 20), opt.seconds = std::min(opt.seconds, 0.002);
     if (opt.particles < 1 || opt.repetitions < 1 || opt.repetitions > 64 || opt.orbits < 1 || !(opt.seconds >= 0)) {
         usage();
@@ -398,12 +390,11 @@ int main(int argc, char **argv) {
                     bugs.push_back(l.label() + " on " + problems[which].name + ": the copies of the batch diverged");
             }
             c.applies = c.by_dt[frame_index].status != TRADEOFF_UNSUPPORTED;
-            if (!c.applies) c.why_not = "motus answers MOTUS_ERROR_UNSUPPORTED (gravity and linear drag only)";
+            if (!c.applies) c.why_not = "motus answers MOTUS_ERROR_UNSUPPORTED (gravity, linear drag, forces only)";
             if (c.applies && l.motus() && l.method != MOTUS_EXACT_LINEAR_DRAG) {
-                const int documented = motus_method_evaluations((motus_method)l.method, l.flags);
-                const double counted = c.by_dt[frame_index].evaluations, steps = c.by_dt[frame_index].steps;
-                // Reusing forces costs one extra evaluation on the first step.
-                const double expected = documented + ((l.flags & MOTUS_STEPPER_REUSE_FORCES) ? 1.0 / steps : 0.0);
+                const int documented = motus_method_evaluations((motus_method)l.method);
+                const double counted = c.by_dt[frame_index].evaluations;
+                const double expected = documented;
                 if (c.by_dt[frame_index].status == TRADEOFF_OK && std::fabs(counted - expected) > 1e-9)
                     bugs.push_back(l.label() + " on " + problems[which].name + ": motus_method_evaluations says " +
                                    std::to_string(documented) + ", counted " + fmt("%.3f", counted));
@@ -456,7 +447,6 @@ int main(int argc, char **argv) {
             line l;
             l.method = energy_methods[s % (energy_series / 2)];
             l.single = s >= energy_series / 2;
-            l.flags = 0;
             l.peer = -1;
             l.name = motus_method_name((motus_method)l.method);
             energy_names.push_back(l.name + (l.single ? "(float)" : ""));
@@ -502,7 +492,7 @@ int main(int argc, char **argv) {
     };
     const std::vector<pair_spec> pairs = {
         {"explicit_euler", "odeint euler"},         {"semi_implicit_euler", "odeint symplectic_euler"},
-        {"velocity_verlet", "odeint velocity_verlet"}, {"velocity_verlet+reuse", "odeint velocity_verlet"},
+        {"velocity_verlet", "odeint velocity_verlet"},
         {"rk4", "odeint runge_kutta4"},             {"rk4", "gsl rk4"},
         {"forest_ruth", "odeint sb3a_mclachlan"},   {"best motus method", "gsl rk8pd"},
     };
@@ -633,7 +623,9 @@ int main(int argc, char **argv) {
               "GSL rk8pd at tolerance 1e-13. "
            << reference_note << "\n";
         md << "- **ns per particle-step**: wall time (CLOCK_MONOTONIC) of a batch of " << opt.particles
-           << " identical particles stepped together over the problem's duration at dt = 1/60 s, divided by "
+           << " identical particles (N = " << opt.particles << "; motus: structure-of-arrays state stepped by one motus_step "
+              "call per step; at N = 1 each step pays the per-call overhead) stepped together over the problem's "
+              "duration at dt = 1/60 s, divided by "
               "steps x particles; median of "
            << opt.repetitions << " rounds; in each round every method x problem is timed once, over at least "
            << fmt("%g", opt.seconds * 1e3)
@@ -646,8 +638,9 @@ int main(int argc, char **argv) {
               "then averaged geometrically (per problem, then over problems). Below 1 motus is cheaper; the goal "
               "is <= 0.5 (2x faster).\n";
         md << "- The peers get hand-written accelerations for each problem (what their user writes); motus "
-              "evaluates its general force model (`motus_forces`; the oscillators go through one anchor spring per "
-              "particle). odeint uses std::vector state, GSL `gsl_odeiv2_driver_apply_fixed_step`.\n\n";
+              "evaluates its general force model (a `motus_scene`: gravity, drags and the attractor on the fast path, "
+              "every stage in registers; the oscillators go through one anchor spring per particle, the coupled "
+              "path). odeint uses std::vector state, GSL `gsl_odeiv2_driver_apply_fixed_step`.\n\n";
 
         const char *short_names[PROBLEM_COUNT] = {"free fall", "gravity + lin. drag", "harmonic osc.", "damped osc.",
                                                   "Kepler circ.", "Kepler ecc.", "projectile quad. drag"};
@@ -871,14 +864,13 @@ int main(int argc, char **argv) {
             md << ".\n";
         }
         md << "- Force evaluations per step are counted (motus: through a force callback that adds nothing; peers: in "
-              "their right-hand side). Reuse and odeint's velocity_verlet need one extra evaluation on the first "
+              "their right-hand side). odeint's velocity_verlet needs one extra evaluation on the first "
               "step. GSL's rk4 estimates its error by step doubling, so each step costs 3 classic RK4 steps "
               "and returns the two half steps.\n";
         md << "- odeint's velocity_verlet evaluates a(x_{n+1}, v_n): with drag it is first order. motus's "
-              "velocity_verlet predicts v_n + a_n h instead; its +reuse variant is only run on forces of position "
-              "only. odeint's symplectic_euler updates the position first, motus's semi_implicit_euler the velocity "
+              "velocity_verlet predicts v_n + a_n h instead. odeint's symplectic_euler updates the position first, motus's semi_implicit_euler the velocity "
               "first (the adjoint method; same order and stability).\n";
-        md << "- leapfrog and leapfrog+reuse are the same map as velocity_verlet (they differ in rounding); they are in "
+        md << "- leapfrog is the same map as velocity_verlet (they differ in rounding); they are in "
               "the tables but not in the figures.\n";
         if (!bugs.empty()) {
             md << "\n**Problems found in motus:**\n\n";

@@ -25,21 +25,22 @@ enum {
 };
 
 /* ---- motus (tradeoff_motus.c) ----------------------------------------------------------------------
-   method: a motus_method value; flags: MOTUS_STEPPER_* flags. *evaluations receives the force-model calls
-   per step the run made, counted through a force callback that adds nothing (0 for the exact stepper, which
-   takes no callback). */
-int tradeoff_motus_trajectory_float(int method, unsigned flags, int problem, double dt, int steps, int count,
-                                    double *trajectory, double *evaluations);
-int tradeoff_motus_trajectory_double(int method, unsigned flags, int problem, double dt, int steps, int count,
-                                     double *trajectory, double *evaluations);
+   method: a motus_method value. *evaluations receives the force-model stages per step the run made,
+   counted through a force callback that adds nothing (0 for the exact stepper, which takes no callback).
+   The callback puts the accuracy runs on motus's coupled path, which gives the same bits as the fast path
+   (motus.h >>determinism); the timed runs have no callback. */
+int tradeoff_motus_trajectory_float(int method, int problem, double dt, int steps, int count, double *trajectory,
+                                    double *evaluations);
+int tradeoff_motus_trajectory_double(int method, int problem, double dt, int steps, int count, double *trajectory,
+                                     double *evaluations);
 /* Wall time per particle-step in ns: the median over `repetitions` timed repetitions, after one untimed
    warm-up run, of a batch of `count` particles reset to the start and stepped `steps` times. A repetition
    repeats that run (resetting untimed in between) until it has timed at least `seconds` seconds, so short
    problems are not measured at the timer's resolution. NaN if a run did not finish. */
-double tradeoff_motus_time_float(int method, unsigned flags, int problem, double dt, int steps, int count,
-                                 int repetitions, double seconds);
-double tradeoff_motus_time_double(int method, unsigned flags, int problem, double dt, int steps, int count,
-                                  int repetitions, double seconds);
+double tradeoff_motus_time_float(int method, int problem, double dt, int steps, int count, int repetitions,
+                                 double seconds);
+double tradeoff_motus_time_double(int method, int problem, double dt, int steps, int count, int repetitions,
+                                  double seconds);
 
 /* ---- peers (tradeoff_peers.cpp) --------------------------------------------------------------------- */
 enum {

@@ -1,8 +1,14 @@
-/* tradeoff_motus.c - the motus side of bench/tradeoff: a batch of copies of one reference problem stepped
-   by one motus_stepper, as a game would. Compiled twice by bench/CMakeLists.txt: in float (the default
-   motus_real) and with MOTUS_DOUBLE; the public functions get the suffix _float or _double. */
+/* tradeoff_motus.c - the motus side of bench/tradeoff: N copies of one reference problem in plain arrays
+   (one per component: structure of arrays), stepped by motus_step under one motus_scene, as a game steps
+   its particles. Uncoupled problems (gravity, drags, the attractor) take motus's fast path: every stage in
+   registers, one read and one write of the state per step. The oscillators are one spring per particle to an
+   anchor at the origin, the coupled path (a pass per stage over scratch). Compiled twice by
+   bench/CMakeLists.txt: in float (the default motus_real) and with MOTUS_DOUBLE; the public functions get
+   the suffix _float or _double, and the engine is compiled static in each. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime under -std=c99 */
 
+#define MOTUS_IMPLEMENTATION
+#define MOTUS_STATIC
 #include "motus.h"
 #include "problems.h"
 #include "tradeoff.h"
@@ -17,84 +23,103 @@
 
 typedef struct batch {
     problem problem;
-    motus_particle *particles;
+    motus_real *x, *y, *vx, *vy;
     motus_spring *springs; /* one spring per particle for the oscillators: each copy has its own anchor spring */
-    motus_forces forces;
-    motus_stepper_desc desc;
-    motus_stepper stepper;
+    motus_scene scene;
+    motus_state state;
+    void *scratch;
+    size_t scratch_bytes;
     int count;
-    long evaluations; /* force-model calls, counted by batch_count_callback */
+    long evaluations; /* force-model stages, counted by batch_count_callback */
 } batch;
 
-/* Adds no force; counts the force-model evaluations a method makes. */
-static void batch_count_callback(void *user_data, int count, const motus_vec2 *positions,
-                                 const motus_vec2 *velocities, motus_real time, motus_vec2 *forces) {
-    (void)count, (void)positions, (void)velocities, (void)time, (void)forces;
+/* Adds no force; counts the force-model evaluations a method makes (one call per stage). */
+static void batch_count_callback(void *user_data, const motus_force_query *query) {
+    (void)query;
     ++((batch *)user_data)->evaluations;
 }
 
 static void batch_close(batch *b) {
-    free(b->particles);
+    free(b->x);
+    free(b->y);
+    free(b->vx);
+    free(b->vy);
     free(b->springs);
-    free(b->desc.scratch);
+    free(b->scratch);
 }
 
-/* 0 on failure to allocate. */
-static int batch_open(batch *b, int which, int method, unsigned flags, int count, int count_evaluations) {
+/* 0 on failure. */
+static int batch_open(batch *b, int which, int method, int count, int count_evaluations) {
     int i;
     memset(b, 0, sizeof *b);
     if (!problem_get(which, &b->problem) || count < 1) return 0;
     b->count = count;
-    b->particles = (motus_particle *)malloc(sizeof(motus_particle) * (size_t)count);
-    b->forces = b->problem.forces;
-    if (b->problem.forces.spring_count > 0) {
+    b->x = (motus_real *)malloc(sizeof(motus_real) * (size_t)count);
+    b->y = (motus_real *)malloc(sizeof(motus_real) * (size_t)count);
+    b->vx = (motus_real *)malloc(sizeof(motus_real) * (size_t)count);
+    b->vy = (motus_real *)malloc(sizeof(motus_real) * (size_t)count);
+    if (!b->x || !b->y || !b->vx || !b->vy) return 0;
+    b->scene = b->problem.scene; /* the problem's forces (bench/problems.h) */
+    b->scene.method = (motus_method)method;
+    if (b->problem.scene.spring_count > 0) { /* each copy gets its own spring to the anchor */
         b->springs = (motus_spring *)malloc(sizeof(motus_spring) * (size_t)count);
         if (!b->springs) return 0;
         for (i = 0; i < count; ++i) {
             b->springs[i] = b->problem.spring;
             b->springs[i].a = i;
         }
-        b->forces.springs = b->springs;
-        b->forces.spring_count = count;
+        b->scene.springs = b->springs;
+        b->scene.spring_count = count;
     }
     if (count_evaluations && method != MOTUS_EXACT_LINEAR_DRAG) {
-        b->forces.callback = batch_count_callback;
-        b->forces.user_data = b;
+        b->scene.force_callback = batch_count_callback;
+        b->scene.user_data = b;
     }
-    b->desc.capacity = count;
-    b->desc.method = (motus_method)method;
-    b->desc.flags = flags;
-    b->desc.scratch_bytes = motus_stepper_scratch_size((motus_method)method, count);
-    b->desc.scratch = malloc(b->desc.scratch_bytes ? b->desc.scratch_bytes : 1);
-    return b->particles && b->desc.scratch;
+    b->state.dimensions = 2;
+    b->state.count = count;
+    b->state.position[0] = b->x, b->state.position[1] = b->y;
+    b->state.velocity[0] = b->vx, b->state.velocity[1] = b->vy;
+    b->scratch_bytes = motus_scratch_size(&b->scene, &b->state);
+    if (b->scratch_bytes == (size_t)-1) return 0;
+    if (b->scratch_bytes) {
+        b->scratch = malloc(b->scratch_bytes);
+        if (!b->scratch) return 0;
+    }
+    return 1;
 }
 
-/* Every particle back at the start, the stepper new. */
-static motus_result batch_reset(batch *b) {
+/* Every particle back at the start. */
+static void batch_reset(batch *b) {
+    const problem_state s = b->problem.start;
     int i;
-    motus_particle start = problem_particle(&b->problem);
-    for (i = 0; i < b->count; ++i) b->particles[i] = start;
+    for (i = 0; i < b->count; ++i) {
+        b->x[i] = (motus_real)s.x, b->y[i] = (motus_real)s.y;
+        b->vx[i] = (motus_real)s.vx, b->vy[i] = (motus_real)s.vy;
+    }
     b->evaluations = 0;
-    return motus_stepper_init(&b->stepper, &b->desc);
+}
+
+static motus_result batch_step(batch *b, double dt) {
+    return motus_step(&b->scene, &b->state, (motus_real)dt, b->scratch, b->scratch_bytes);
 }
 
 static void batch_store(const batch *b, double *out) {
-    problem_state s = problem_state_of(&b->particles[0]);
-    out[0] = s.x, out[1] = s.y, out[2] = s.vx, out[3] = s.vy;
+    out[0] = b->x[0], out[1] = b->y[0], out[2] = b->vx[0], out[3] = b->vy[0];
 }
 
-int TRADEOFF_NAME(tradeoff_motus_trajectory)(int method, unsigned flags, int problem, double dt, int steps,
-                                             int count, double *trajectory, double *evaluations) {
+int TRADEOFF_NAME(tradeoff_motus_trajectory)(int method, int problem, double dt, int steps, int count,
+                                             double *trajectory, double *evaluations) {
     batch b;
     int n, outcome = TRADEOFF_OK;
     *evaluations = 0;
-    if (!batch_open(&b, problem, method, flags, count, 1) || batch_reset(&b) != MOTUS_OK) {
+    if (!batch_open(&b, problem, method, count, 1)) {
         batch_close(&b);
         return TRADEOFF_DIVERGED;
     }
+    batch_reset(&b);
     batch_store(&b, trajectory);
     for (n = 1; n <= steps; ++n) {
-        motus_result r = motus_stepper_step(&b.stepper, b.particles, count, &b.forces, (motus_real)dt);
+        motus_result r = batch_step(&b, dt);
         if (r == MOTUS_ERROR_UNSUPPORTED) {
             outcome = TRADEOFF_UNSUPPORTED;
             break;
@@ -107,9 +132,9 @@ int TRADEOFF_NAME(tradeoff_motus_trajectory)(int method, unsigned flags, int pro
     }
     for (; n <= steps; ++n) trajectory[4 * n] = trajectory[4 * n + 1] = trajectory[4 * n + 2] = trajectory[4 * n + 3] = NAN;
     if (outcome == TRADEOFF_OK) {
-        const motus_particle *first = &b.particles[0], *last = &b.particles[count - 1];
-        if (memcmp(&first->position, &last->position, sizeof first->position) != 0 ||
-            memcmp(&first->velocity, &last->velocity, sizeof first->velocity) != 0)
+        const int last = count - 1;
+        if (memcmp(&b.x[0], &b.x[last], sizeof *b.x) || memcmp(&b.y[0], &b.y[last], sizeof *b.y) ||
+            memcmp(&b.vx[0], &b.vx[last], sizeof *b.vx) || memcmp(&b.vy[0], &b.vy[last], sizeof *b.vy))
             outcome = TRADEOFF_BATCH_MISMATCH;
         *evaluations = steps > 0 ? (double)b.evaluations / steps : 0;
     }
@@ -121,20 +146,20 @@ int TRADEOFF_NAME(tradeoff_motus_trajectory)(int method, unsigned flags, int pro
 static double batch_timed_run(batch *b, double dt, int steps) {
     double start;
     int n;
-    if (batch_reset(b) != MOTUS_OK) return -1;
+    batch_reset(b);
     start = tradeoff_seconds();
     for (n = 0; n < steps; ++n)
-        if (motus_stepper_step(&b->stepper, b->particles, b->count, &b->forces, (motus_real)dt) != MOTUS_OK) return -1;
+        if (batch_step(b, dt) != MOTUS_OK) return -1;
     return tradeoff_seconds() - start;
 }
 
-double TRADEOFF_NAME(tradeoff_motus_time)(int method, unsigned flags, int problem, double dt, int steps, int count,
-                                          int repetitions, double seconds) {
+double TRADEOFF_NAME(tradeoff_motus_time)(int method, int problem, double dt, int steps, int count, int repetitions,
+                                          double seconds) {
     batch b;
     double ns[64] = {0}, warm_up;
     int rep, runs, run;
     if (repetitions > 64) repetitions = 64;
-    if (!batch_open(&b, problem, method, flags, count, 0)) {
+    if (!batch_open(&b, problem, method, count, 0)) {
         batch_close(&b);
         return NAN;
     }

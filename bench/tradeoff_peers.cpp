@@ -6,7 +6,7 @@
 // Each peer gets the form its documentation shows: odeint steppers over std::vector state (x, y, vx, vy of
 // every particle for the first-order steppers; coordinates and momenta for the symplectic ones), GSL through
 // gsl_odeiv2_driver_apply_fixed_step. The accelerations are written by hand for each problem, as a user of
-// those libraries would write them, while motus evaluates its general force model (motus_forces).
+// those libraries would write them, while motus evaluates its general force model (a motus_scene).
 #define MOTUS_DOUBLE
 #include "problems.h"
 #include "tradeoff.h"

@@ -1,18 +1,21 @@
 #!/usr/bin/env bash
 # Usage: scripts/throughput.sh [throughput options...]
-# Measures ns per particle-step of motus's batch kernels for N from 10^3 to 10^7, in 2D and 3D, float and
-# double, side by side with the textbook loop, a hand-written loop for each scene, motus's general kernel,
-# the memory bandwidth (copy, triad and the in-place bound), Boost.Odeint and 2 threads (bench/throughput.cpp
-# says how). It installs the Debian 12 packages it needs and are missing (compilers, CMake, the Boost
-# headers, gnuplot), builds the two binaries of the `throughput` target in build-bench/ (throughput_native:
-# -O3 -march=native; throughput_o2: -O2, no -march), runs both one after the other, merges their results and
-# writes into build-bench/throughput/:
+# Measures ns per particle-step of motus_step (every method, over structure-of-arrays state) for N = 4096,
+# 10^5 and 10^7, in 2D and 3D, float and double, on the scenes drift, gravity, gravity + damping, gravity +
+# linear drag, mass + forces, springs (coupled) and attractor, side by side with a hand-written loop for each
+# scene, the memory bandwidth (copy, triad and the in-place bound), Boost.Odeint (symplectic_euler,
+# velocity_verlet, runge_kutta4 on gravity) and 2 threads over motus_step_range; and at N = 5000 the textbook
+# per-particle path (motus_particle_* on an array of motus_particle) against a plain loop doing the same math
+# (bench/throughput.cpp says how). It installs the Debian 12 packages it needs and are missing (compilers,
+# CMake, the Boost headers, gnuplot), builds the two binaries of the `throughput` target in build-bench/
+# (throughput_native: -O3 -march=native; throughput_o2: -O2, no -march), runs both one after the other,
+# merges their results and writes into build-bench/throughput/:
 #   native.csv, o2.csv            every measurement (median, min, max over the rounds)
 #   native.info, o2.info          the machine, compiler, flags, and how busy other processes kept it
 #   native_verify.csv, o2_verify.csv  whether every method computed what motus did
 #   throughput.md                 the targets as measured ratios, and every table (also printed on stdout)
 #   throughput.png, throughput_scenes.png, throughput_o2.png
-# and copies the figures to docs/throughput*.png for the README. About 3 minutes on 2 cores; run it on an
+# and copies the figures to docs/throughput*.png for the README. About 10 minutes on 2 cores; run it on an
 # otherwise idle machine (the report says how busy it was: other processes slow the 2-thread runs most).
 # Options go to both programs: --quick (a smoke run in seconds; its figures are not copied to docs/),
 # --sizes N,N,... , --rounds R (9), --seconds S (0.001 per measurement).

@@ -1,17 +1,20 @@
 #!/usr/bin/env bash
 # Usage: scripts/tradeoff.sh [tradeoff options...]
-# Measures every motus integrator against Boost.Odeint and GSL on the reference problems of bench/problems.h
-# and draws the figures. It installs the Debian 12 packages it needs and are missing (compilers, CMake, the
+# Measures every motus integrator (motus_step over structure-of-arrays state: the fast path for gravity, drags
+# and the attractor, the coupled path for the oscillators' anchor springs) against Boost.Odeint and GSL on the
+# reference problems of bench/problems.h, and draws the figures. Timed twice: a batch of N = 4096
+# particles (the figures in docs/) and N = 1 (one particle: every step pays the per-call overhead, of motus's
+# call as of the peers'), each with its own report. It installs the Debian 12 packages it needs and are missing (compilers, CMake, the
 # Boost headers, GSL, gnuplot), builds the `tradeoff` target in build-bench/ (Release, -O2, no -march=native
 # so that the numbers hold for any x86-64; configure with -DMOTUS_BENCH_NATIVE=ON to change that), runs it
-# and writes into build-bench/tradeoff/:
+# and writes into build-bench/tradeoff/ (N = 4096) and build-bench/tradeoff/n1/ (N = 1):
 #   tradeoff.csv         every method x precision x problem x dt: error, energy error, evaluations, ns, cost
 #   tradeoff_ratios.csv  the cost ratio motus/peer at every error level both cover
 #   tradeoff.md          the tables (also printed on stdout; progress goes to stderr)
 #   work_precision.png, convergence.png, kepler_energy.png
-# and copies the figures to docs/tradeoff_*.png for the README. About 2 minutes on 2 cores.
+# and copies the N = 4096 figures to docs/tradeoff_*.png for the README. About 4 minutes on 2 cores.
 # Options go to the program: --quick (a smoke run in seconds; its figures are not copied to docs/),
-# --particles N (4096), --repetitions R (9), --seconds S (0.02), --orbits K (1000).
+# --repetitions R (9), --seconds S (0.02), --orbits K (1000); --particles N replaces the two runs by one at N.
 # TRADEOFF_BUILD_DIR and TRADEOFF_OUT override the two directories.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -31,11 +34,23 @@ fi
 
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-"$build/bench/tradeoff" --out "$out" "$@" </dev/null
-gnuplot -e "out='$out'" bench/plot_tradeoff.gp </dev/null
+quick=0 particles_given=0
+for argument in "$@"; do
+    [ "$argument" = "--quick" ] && quick=1
+    [ "$argument" = "--particles" ] && particles_given=1
+done
+if [ "$particles_given" -eq 1 ]; then
+    "$build/bench/tradeoff" --out "$out" "$@" </dev/null
+    gnuplot -e "out='$out'" bench/plot_tradeoff.gp </dev/null
+else
+    "$build/bench/tradeoff" --out "$out" --particles 4096 "$@" </dev/null
+    gnuplot -e "out='$out'" bench/plot_tradeoff.gp </dev/null
+    mkdir -p "$out/n1"
+    "$build/bench/tradeoff" --out "$out/n1" --particles 1 "$@" </dev/null >"$out/n1/stdout.md"
+    gnuplot -e "out='$out/n1'" bench/plot_tradeoff.gp </dev/null
+    echo "tradeoff: N = 1 (one particle per call) in $out/n1/tradeoff.md" >&2
+fi
 
-quick=0
-for argument in "$@"; do [ "$argument" = "--quick" ] && quick=1; done
 if [ "$quick" -eq 0 ]; then
     for figure in work_precision convergence kepler_energy; do
         cp "$out/$figure.png" "docs/tradeoff_$figure.png"

@@ -1,0 +1,123 @@
+#!/usr/bin/env bash
+# Usage: scripts/compile-time.sh
+# What motus.h costs a build: the wall time of `cc -c` (best of 3) of four small units, with gcc 12 and
+# clang 14 (each if installed; clang is skipped with a message otherwise):
+#   include_only   includes motus.h and calls nothing                               -O2   target <= 0.15 s
+#   particle_step  calls the inline textbook functions (motus_particle_*)           -O2   target <= 0.5 s
+#   scene_step     builds a motus_scene and calls motus_step, WITHOUT the engine    -O2   target <= 0.5 s
+#   kernels        the unit with MOTUS_IMPLEMENTATION (float): the engine itself    -O2   target <= 3 s
+#                                                                                   -O0   target <= 4 s
+# Each unit is -std=c99 -Wall -Wextra, no -march. Writes build-bench/compile_time/compile_time.csv (header
+# `case,compiler,flags,seconds`) and prints the table with the targets and PASS/MISS. The times are wall
+# clock: on a busy machine they are noisy (the best of 3 takes out some of it); the script prints the load.
+# Installs nothing but what scripts/deps.sh bench installs (gcc, cmake, ...). COMPILE_TIME_OUT overrides the
+# output directory; COMPILE_TIME_RUNS the number of runs (3).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+command -v gcc >/dev/null 2>&1 || scripts/deps.sh bench >&2
+
+out=${COMPILE_TIME_OUT:-build-bench/compile_time}
+runs=${COMPILE_TIME_RUNS:-3}
+mkdir -p "$out/src" "$out/obj"
+include=$(pwd)/include
+
+cat >"$out/src/include_only.c" <<'EOF'
+/* Includes motus.h and calls nothing: what every unit of a game that includes the header pays. */
+#include "motus.h"
+int compile_time_include_only(void) { return MOTUS_VERSION; }
+EOF
+cat >"$out/src/particle_step.c" <<'EOF'
+/* The textbook per-particle path: every function is inline in the header. */
+#include "motus.h"
+int compile_time_particle_step(motus_particle *particles, int count, motus_real dt) {
+    int i, bad = 0;
+    const motus_vec2 lo = motus_v2(0, 0), hi = motus_v2(800, 600);
+    for (i = 0; i < count; ++i) {
+        motus_particle *p = &particles[i];
+        bad |= motus_particle_clear_forces(p);
+        bad |= motus_particle_add_force(p, motus_v2(0, 9.81f * motus_particle_mass(p)));
+        bad |= motus_particle_step(p, dt);
+        bad |= motus_particle_damp_per_step(p, 0.01f);
+        bad |= motus_particle_bounce(p, lo, hi, 0.5f);
+    }
+    return bad;
+}
+EOF
+cat >"$out/src/scene_step.c" <<'EOF'
+/* A game unit that steps a scene: motus_step is declared here and compiled in another unit (no
+   MOTUS_IMPLEMENTATION). */
+#include "motus.h"
+motus_result compile_time_scene_step(motus_particle *particles, int count, motus_real dt) {
+    motus_scene scene;
+    motus_state state;
+    memset(&scene, 0, sizeof scene);
+    scene.method = MOTUS_VELOCITY_VERLET;
+    scene.gravity = motus_v3(0, 9.81f, 0);
+    scene.damping_per_second = 0.1f;
+    scene.bounds_max = motus_v3(800, 600, 0);
+    scene.restitution = 0.5f;
+    state = motus_state_of_particles(particles, count);
+    return motus_step(&scene, &state, dt, NULL, 0);
+}
+EOF
+cat >"$out/src/kernels.c" <<'EOF'
+/* The one unit that compiles the engine (float). */
+#define MOTUS_IMPLEMENTATION
+#include "motus.h"
+EOF
+
+# case flags target_seconds
+cases=(
+    "include_only -O2 0.15"
+    "particle_step -O2 0.5"
+    "scene_step -O2 0.5"
+    "kernels -O2 3"
+    "kernels -O0 4"
+)
+
+compilers=()
+for candidate in gcc-12 gcc; do
+    if command -v "$candidate" >/dev/null 2>&1; then compilers+=("$candidate"); break; fi
+done
+for candidate in clang-14 clang; do
+    if command -v "$candidate" >/dev/null 2>&1; then compilers+=("$candidate"); break; fi
+done
+[ ${#compilers[@]} -gt 0 ] || { echo "compile-time: no gcc or clang found" >&2; exit 1; }
+command -v clang-14 >/dev/null 2>&1 || command -v clang >/dev/null 2>&1 ||
+    echo "compile-time: clang not installed: measuring gcc only (apt-get install clang to add it)" >&2
+
+now_ns() { date +%s%N; }
+
+csv=$out/compile_time.csv
+echo "case,compiler,flags,seconds" >"$csv"
+table=()
+misses=0
+echo "compile-time: machine load before: $(cut -d' ' -f1-3 /proc/loadavg) ($(nproc) CPUs)" >&2
+for compiler in "${compilers[@]}"; do
+    version=$("$compiler" -dumpfullversion -dumpversion 2>/dev/null | head -1)
+    name="${compiler%%-*} $version"
+    for entry in "${cases[@]}"; do
+        read -r unit flags target <<<"$entry"
+        best=""
+        for ((run = 0; run < runs; ++run)); do
+            start=$(now_ns)
+            "$compiler" -std=c99 -Wall -Wextra "$flags" -I"$include" -c "$out/src/$unit.c" \
+                -o "$out/obj/$unit-$compiler$flags.o"
+            end=$(now_ns)
+            elapsed=$((end - start))
+            if [ -z "$best" ] || [ "$elapsed" -lt "$best" ]; then best=$elapsed; fi
+        done
+        seconds=$(awk -v ns="$best" 'BEGIN { printf "%.3f", ns / 1e9 }')
+        verdict=$(awk -v s="$seconds" -v t="$target" 'BEGIN { print (s <= t) ? "PASS" : "MISS" }')
+        [ "$verdict" = PASS ] || misses=$((misses + 1))
+        echo "$unit,$name,$flags,$seconds" >>"$csv"
+        table+=("$(printf '%-14s %-14s %-5s %8s s  <= %-5s s  %s' "$unit" "$name" "$flags" "$seconds" "$target" "$verdict")")
+    done
+done
+
+printf '%-14s %-14s %-5s %10s  %-10s %s\n' case compiler flags seconds target result
+for row in "${table[@]}"; do echo "$row"; done
+echo "compile-time: machine load after: $(cut -d' ' -f1-3 /proc/loadavg) ($(nproc) CPUs); wall-clock best of $runs," \
+     "noisy on a shared machine" >&2
+echo "compile-time: $misses miss(es); results in $csv" >&2
