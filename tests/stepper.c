@@ -103,7 +103,10 @@ static void ensure_rejected_at(motus_stepper *stepper, motus_particle *particles
     motus_particle particles_before[CAPACITY];
     motus_stepper stepper_before;
     motus_result result;
-    const char *method = stepper ? motus_method_name(stepper->method) : "(no stepper)";
+    /* motus_method_name is NULL for a method out of range (stepper_rejects_corrupt_method): never pass NULL
+       to %s (undefined; GCC 12 -O3 sees it: -Wformat-overflow). */
+    const char *name = stepper ? motus_method_name(stepper->method) : "(no stepper)";
+    const char *method = name ? name : "(method out of range)";
     if (particles) memcpy(particles_before, particles, sizeof particles_before);
     if (stepper) memcpy(&stepper_before, stepper, sizeof stepper_before);
     result = motus_stepper_step(stepper, particles, count, forces, dt);
