@@ -12,6 +12,8 @@
 # What each pass leaves out, and why: the *_exclude patterns below (README.md, "Tests").
 # Environment: MOTUS_BUILD_DIR (build), MOTUS_ASAN_BUILD_DIR (build-asan), MOTUS_FUZZ_BUILD_DIR (build-fuzz),
 # MOTUS_FUZZ_SECONDS (60), MOTUS_JOBS (nproc).
+# Warnings are errors in every build here (-DMOTUS_WERROR=ON, -Werror for the fuzz harness), as in
+# scripts/test.sh: this is CI's script.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -56,7 +58,7 @@ run_asan() {
     # clang: GCC 12 with UBSan takes minutes per unit that includes the batch kernels, clang seconds.
     CC=${MOTUS_ASAN_CC:-clang} CXX=${MOTUS_ASAN_CXX:-clang++} \
     cmake -S . -B "$asan_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMOTUS_SANITIZE=ON \
-          -DMOTUS_BUILD_TESTS=ON -DMOTUS_BUILD_EXAMPLES=ON
+          -DMOTUS_BUILD_TESTS=ON -DMOTUS_BUILD_EXAMPLES=ON -DMOTUS_WERROR=ON
     cmake --build "$asan_build" --parallel "$jobs"
     (cd "$asan_build" && ctest --output-on-failure --parallel "$jobs" -E "$asan_exclude")
     elapsed "asan (build + ctest)" "$start"
@@ -67,7 +69,8 @@ run_valgrind() {
     start=$(date +%s)
     command -v valgrind >/dev/null 2>&1 || { echo "check-tools: valgrind is not installed (scripts/deps.sh test)" >&2; exit 1; }
     if [ ! -f "$build/CTestTestfile.cmake" ]; then
-        cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMOTUS_BUILD_TESTS=ON -DMOTUS_BUILD_EXAMPLES=ON
+        cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMOTUS_BUILD_TESTS=ON -DMOTUS_BUILD_EXAMPLES=ON \
+              -DMOTUS_WERROR=ON
         cmake --build "$build" --parallel "$jobs"
     fi
     (cd "$build" && ctest -T memcheck --output-on-failure --parallel "$jobs" -E "$valgrind_exclude" \

@@ -10,7 +10,8 @@ scripts/deps.sh test
 scripts/bootstrap-raylib.sh
 jobs=$(nproc 2>/dev/null || echo 2)
 start=$(date +%s)
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMOTUS_BUILD_TESTS=ON -DMOTUS_BUILD_EXAMPLES=ON
+# MOTUS_WERROR: warnings are errors here, in CI; a user's build (the option's default, OFF) only shows them.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMOTUS_BUILD_TESTS=ON -DMOTUS_BUILD_EXAMPLES=ON -DMOTUS_WERROR=ON
 cmake --build build --parallel "$jobs"
 (cd build && ctest --output-on-failure --parallel "$jobs" "$@")
 echo "test: build + ctest took $(( $(date +%s) - start )) s"
