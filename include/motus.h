@@ -1971,6 +1971,9 @@ static motus_result motus__state_shape(const motus_state *state, int *dims, motu
     for (d = 0; d < *dims; ++d) {
         if (!state->position[d]) return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "state.position", -1);
         if (!state->velocity[d]) return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "state.velocity", -1);
+        /* forces: all of the state's components, or none */
+        if (!state->force[d] != !state->force[0])
+            return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "state.force", -1);
     }
     /* The stride times the count must be an offset C can form. */
     if (state->stride > 1 && (size_t)(state->count - 1) > (size_t)PTRDIFF_MAX / (size_t)state->stride / sizeof(motus_real))
