@@ -609,6 +609,9 @@ static void step_operation(world *w, reader *r, int ranged) {
     if (result == MOTUS_ERROR_NOT_FINITE && validated && precheck_ok && precheck == MOTUS_OK &&
         range_finite(&s, first, end))
         validated = 0;
+#ifdef MOTUS_CHECKED
+    if (result == MOTUS_ERROR_NOT_FINITE && validated && precheck_ok && precheck == MOTUS_OK) validated = 0;
+#endif
 #endif
     if (result == MOTUS_ERROR_NOT_FINITE && validated) {
 #ifdef MOTUS_CHECKED
