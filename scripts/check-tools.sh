@@ -34,19 +34,19 @@ parts=("$@")
 # - consumer.*: CMake consumer projects built against the installed package, which carries no sanitizer.
 asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|clang\+\+|tcc|fast_math_message)\.|consumer\.)'
 # Tests valgrind does not run (ctest -E), each for a reason:
-# - compile.batch.native.*, compile.batch.agree.*, compile.batch.clang.*, bench.throughput_quick_run: they run
-#   -march=native binaries, which on an AVX-512 machine use instructions valgrind cannot decode (SIGILL).
-#   The same kernels at 16 and 32 bytes (compile.batch.nosimd/simd32/avx2.*) run under valgrind, and the
+# - compile.engine.native.*, compile.engine.agree.*, compile.engine.clang.*, bench.throughput_quick_run: they
+#   run -march=native binaries, which on an AVX-512 machine use instructions valgrind cannot decode (SIGILL).
+#   The same kernels at 16 and 32 bytes (compile.engine.nosimd/simd32/avx2.*) run under valgrind, and the
 #   AVX-512 ones under ASan.
 # - determinism.*: 10^5 steps of 1000 particles per method (20 s of CPU per precision, hours under valgrind),
-#   and the matrix rebuilds them 18 times; the stepper and batch code they hash runs under valgrind in the
-#   stepper.*, batch*.* and numeric.* tests, and the golden-hash tests themselves run under ASan.
+#   and the matrix rebuilds them 18 times; the engine code they hash runs under valgrind in the unit.*,
+#   numeric.* and compile.engine.* tests, and the golden-hash tests themselves run under ASan.
 # - consumer.*: the command is CMake (ctest --build-and-test); valgrind would check CMake, not motus.
 # - example.*: raylib programs in Xvfb with GLX on llvmpipe: under valgrind a frame takes longer than the key
 #   tests' timing allows, and what it reports is Mesa's; they run under ASan instead.
 # Script-driven tests (compile.gcc.* ...) run with --trace-children: valgrind follows the programs the script
 # starts from the build tree and skips system programs (compilers, shells' tools) by the skip patterns.
-valgrind_exclude='^(compile\.batch\.(native|agree|clang)\.|determinism\.|consumer\.|example\.|bench\.throughput_quick_run$)'
+valgrind_exclude='^(compile\.engine\.(native|agree|clang)\.|determinism\.|consumer\.|example\.|bench\.throughput_quick_run$)'
 valgrind_options="--error-exitcode=1 --trace-children=yes --trace-children-skip=/usr/*,/bin/*,/sbin/* --leak-check=full --show-leak-kinds=definite --errors-for-leak-kinds=definite \
 --track-origins=yes --num-callers=30 --suppressions=$root/tests/support/valgrind.supp"
 
@@ -55,7 +55,7 @@ elapsed() { echo "check-tools: $1 took $(( $(date +%s) - $2 )) s"; }
 run_asan() {
     local start
     start=$(date +%s)
-    # clang: GCC 12 with UBSan takes minutes per unit that includes the batch kernels, clang seconds.
+    # clang: GCC 12 with UBSan takes minutes per unit that includes the engine's kernels, clang seconds.
     CC=${MOTUS_ASAN_CC:-clang} CXX=${MOTUS_ASAN_CXX:-clang++} \
     cmake -S . -B "$asan_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMOTUS_SANITIZE=ON \
           -DMOTUS_BUILD_TESTS=ON -DMOTUS_BUILD_EXAMPLES=ON -DMOTUS_WERROR=ON
