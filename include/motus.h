@@ -2252,7 +2252,8 @@ static motus_result motus__written_broken(const motus_state *state, int dims, in
 /* Runs the kernel over [first, end), after the checked build's look at the data. */
 static motus_result motus__run(motus__job *j, const motus_scene *scene, const motus_state *state, int dims, int first,
                                int end) {
-    const int fast = j->stride == 1 && !(j->terms & MOTUS__T_COUPLED);
+    /* fewer particles than a group of lanes: straight to the general kernel, which takes partial groups */
+    const int fast = j->stride == 1 && !(j->terms & MOTUS__T_COUPLED) && end - first >= MOTUS__LANES;
     const motus__kernel_function kernel = motus__kernel_for(scene->method, dims, j->terms, !fast);
 #ifdef MOTUS_CHECKED
     motus_result result = motus_state_check(scene, state, first, end - first, NULL);
