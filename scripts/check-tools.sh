@@ -44,9 +44,14 @@ asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|cla
 # - consumer.*: the command is CMake (ctest --build-and-test); valgrind would check CMake, not motus.
 # - example.*: raylib programs in Xvfb with GLX on llvmpipe: under valgrind a frame takes longer than the key
 #   tests' timing allows, and what it reports is Mesa's; they run under ASan instead.
+# - compile.engine.*: engine.c rebuilt at every lane width (and -march=native, which valgrind cannot decode
+#   on an AVX-512 machine): 4-25 s each natively, half an hour under valgrind; the default build's engine.*
+#   runs under valgrind, every width under ASan.
+# - engine*.paths_agree_*, stability.*.ten_million_steps, bench.*: the heaviest runs of code the lighter
+#   tests cover (2,304 scenes per method; 10^7 steps; the benchmarks' quick mode); they run under ASan.
 # Script-driven tests (compile.gcc.* ...) run with --trace-children: valgrind follows the programs the script
 # starts from the build tree and skips system programs (compilers, shells' tools) by the skip patterns.
-valgrind_exclude='^(compile\.engine\.(native|agree|clang)\.|determinism\.|consumer\.|example\.|bench\.throughput_quick_run$)'
+valgrind_exclude='^(compile\.engine\.|determinism\.|consumer\.|example\.|bench\.|engine(_checked)?\.(float|double)\.paths_agree_|stability\.(float|double)\.ten_million_steps$)'
 valgrind_options="--error-exitcode=1 --trace-children=yes --trace-children-skip=/usr/*,/bin/*,/sbin/* --leak-check=full --show-leak-kinds=definite --errors-for-leak-kinds=definite \
 --track-origins=yes --num-callers=30 --suppressions=$root/tests/support/valgrind.supp"
 

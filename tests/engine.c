@@ -300,7 +300,12 @@ static int paths_agree(const setup *s, uint32_t seed) {
     record.evaluations = motus_method_evaluations(s->method);
     scratch_bytes = motus_scratch_size(&with_callback, &sd);
     ENSURE(scratch_bytes <= sizeof SCRATCH);
+#ifdef MOTUS_CHECKED /* and a copy of the state to step (positions, velocities, forces, inverse masses) */
+    ENSURE(scratch_bytes == ((size_t)s->dims * (size_t)(2 + record.evaluations) + (size_t)(3 * s->dims + 1)) *
+                                sizeof(motus_real) * (size_t)s->count);
+#else
     ENSURE(scratch_bytes == (size_t)s->dims * (size_t)(2 + record.evaluations) * sizeof(motus_real) * (size_t)s->count);
+#endif
     /* the exact stepper takes no quadratic drag, attractor or callback */
     unsupported = s->method == MOTUS_EXACT_LINEAR_DRAG && (s->terms & (T_QUADRATIC_DRAG | T_ATTRACTOR));
     if (unsupported) {

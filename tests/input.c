@@ -31,7 +31,12 @@
 
 enum { CAPACITY = 5, SPRINGS = 3, BN = 37, GUARD = 8, BSTRIDE = GUARD + BN + GUARD };
 enum { BX = 0, BY, BZ, BVX, BVY, BVZ, BFX, BFY, BFZ, BMASS, BARRAYS };
-enum { SCRATCH_REALS = 3 * (2 + MOTUS__MAX_EVALUATIONS) * BN + 64 };
+#ifdef MOTUS_CHECKED /* checked builds step coupled scenes on a copy of the state in scratch */
+#define CHECKED_COPY_REALS (3 * 3 + 1)
+#else
+#define CHECKED_COPY_REALS 0
+#endif
+enum { SCRATCH_REALS = (3 * (2 + MOTUS__MAX_EVALUATIONS) + CHECKED_COPY_REALS) * BN + 64 };
 
 static const motus_real DT = (motus_real)(1.0 / 60.0);
 static motus_real not_a_number(void) { return (motus_real)NAN; }
@@ -695,7 +700,8 @@ TEST(scratch_too_small_or_misaligned) {
             size_t needed;
             setup(PATTERNS[pattern], (motus_method)m);
             needed = motus_scratch_size(&W.scene, &W.state);
-            ENSURE(needed == (size_t)3 * (size_t)(2 + motus_method_evaluations((motus_method)m)) * BN * sizeof(motus_real));
+            ENSURE(needed == ((size_t)3 * (size_t)(2 + motus_method_evaluations((motus_method)m)) + CHECKED_COPY_REALS) *
+                                 BN * sizeof(motus_real));
             ENSURE(needed <= sizeof W.scratch);
             EXPECT(MOTUS_ERROR_SCRATCH_TOO_SMALL, "NULL", motus_step(&W.scene, &W.state, DT, NULL, 0));
             EXPECT(MOTUS_ERROR_SCRATCH_TOO_SMALL, "NULL, bytes enough", motus_step(&W.scene, &W.state, DT, NULL, needed));
