@@ -247,7 +247,7 @@ static void noop_callback(void *user_data, const motus_force_query *q) {
     }
 }
 
-static motus_real SCRATCH[4 * 6 * MAX]; /* 3D, RK4: (2 + 4) * 3 reals a particle */
+static motus_real SCRATCH[(3 * 6 + 10) * MAX]; /* 3D, RK4: (2 + 4) * 3 reals a particle, + 10 for the checked copy */
 static soa A, B, C, D, E;
 
 /* Splits [0, count) into 1..5 ranges (some may be empty) and steps them in a random order. */
