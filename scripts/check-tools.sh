@@ -46,7 +46,7 @@ asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|cla
 #   tests' timing allows, and what it reports is Mesa's; they run under ASan instead.
 # - compile.engine.*: engine.c rebuilt at every lane width (and -march=native, which valgrind cannot decode
 #   on an AVX-512 machine): 4-25 s each natively, half an hour under valgrind; the default build's engine.*
-#   runs under valgrind, every width under ASan.
+#   runs under valgrind and ASan (the widths are checked for identical bits in the normal tree only).
 # - engine*.paths_agree_*, stability.*.ten_million_steps, bench.*: the heaviest runs of code the lighter
 #   tests cover (2,304 scenes per method; 10^7 steps; the benchmarks' quick mode); they run under ASan.
 # Script-driven tests (compile.gcc.* ...) run with --trace-children: valgrind follows the programs the script
