@@ -47,8 +47,9 @@ asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|cla
 # - compile.engine.*: engine.c rebuilt at every lane width (and -march=native, which valgrind cannot decode
 #   on an AVX-512 machine): 4-25 s each natively, half an hour under valgrind; the default build's engine.*
 #   runs under valgrind and ASan (the widths are checked for identical bits in the normal tree only).
-# - engine*.paths_agree_*, stability.*.ten_million_steps, bench.*: the heaviest runs of code the lighter
-#   tests cover (2,304 scenes per method; 10^7 steps; the benchmarks' quick mode); they run under ASan.
+# - engine*.paths_agree_*, stability.*.ten_million_steps: the heaviest runs of code the lighter tests cover
+#   (2,304 scenes per method; 10^7 steps); they run under ASan. bench.*: the benchmarks' quick mode, run in
+#   build/ only (not sanitized either).
 # Script-driven tests (compile.gcc.* ...) run with --trace-children: valgrind follows the programs the script
 # starts from the build tree and skips system programs (compilers, shells' tools) by the skip patterns.
 valgrind_exclude='^(compile\.engine\.|determinism\.|consumer\.|example\.|bench\.|engine(_checked)?\.(float|double)\.paths_agree_|stability\.(float|double)\.ten_million_steps$)'
@@ -61,9 +62,10 @@ run_asan() {
     local start
     start=$(date +%s)
     # clang: GCC 12 with UBSan takes minutes per unit that includes the engine's kernels, clang seconds.
+    # No benchmarks (CI time: each of their programs compiles the engine; their quick runs are in build/).
     CC=${MOTUS_ASAN_CC:-clang} CXX=${MOTUS_ASAN_CXX:-clang++} \
     cmake -S . -B "$asan_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMOTUS_SANITIZE=ON \
-          -DMOTUS_BUILD_TESTS=ON -DMOTUS_BUILD_EXAMPLES=ON -DMOTUS_WERROR=ON
+          -DMOTUS_BUILD_TESTS=ON -DMOTUS_BUILD_EXAMPLES=ON -DMOTUS_BUILD_BENCH=OFF -DMOTUS_WERROR=ON
     cmake --build "$asan_build" --parallel "$jobs"
     (cd "$asan_build" && ctest --output-on-failure --parallel "$jobs" -E "$asan_exclude")
     elapsed "asan (build + ctest)" "$start"
