@@ -59,7 +59,7 @@
    - Forces accumulate until you clear them. The step does not clear them: a constant force may be added once.
    - Every function that can be handed bad input returns a motus_result; on any result other than MOTUS_OK
      nothing was written (see >>checks for the one documented exception). dt == 0 is a valid step of
-     nothing; a count of 0 is valid and does nothing. motus_result_string() turns a result into a sentence,
+     nothing (NaN or Inf in the state is still reported); a count of 0 is valid and does nothing. motus_result_string() turns a result into a sentence,
      motus_scene_check() names the scene field at fault, motus_state_check() the particle and field.
    - Zero means default in every description: a zeroed motus_scene is a valid scene with no forces.
    - No compound literals in the header, so it also compiles as C++.
@@ -604,7 +604,8 @@ MOTUS_DEF motus_result motus__step(motus_vec3 *position, motus_vec3 *velocity, m
     motus_vec3 v, x;
     if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     if (inverse_mass < 0) return MOTUS_ERROR_INVALID_MASS;
-    if (dt == 0) return MOTUS_OK; /* a step of nothing, as motus_step's: the state stays bit for bit */
+    /* a step of nothing, as motus_step's: the state stays bit for bit, and bad data is still reported */
+    if (dt == 0) return motus__check(*position, *velocity, force, inverse_mass);
     /* a = (F*(1/m) + g) - k*v with g = 0 and k = 0, as the engine computes it for a scene without gravity
        and drag (adding a zero and subtracting a v*0 change nothing but the sign of a zero), so that the two
        agree bit for bit, signed zeros included. */
@@ -2260,7 +2261,8 @@ MOTUS_API motus_result motus_step_range(const motus_scene *scene, const motus_st
     if (result != MOTUS_OK) return result;
     if (first < 0 || count < 0 || first > state->count || count > state->count - first) return MOTUS_ERROR_INVALID_COUNT;
     if (motus__coupled(scene)) return MOTUS_ERROR_UNSUPPORTED;
-    if (count == 0 || dt == 0) return MOTUS_OK;
+    if (count == 0) return MOTUS_OK;
+    if (dt == 0) return motus_state_check(scene, state, first, count, NULL); /* nothing moves; bad data is reported */
     motus__job_init(&job, scene, state, dims, dt);
     return motus__run(&job, scene, state, dims, first, first + count);
 }
@@ -2309,7 +2311,8 @@ MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *s
     if (result != MOTUS_OK) return result;
     count = state->count;
     if (!motus__coupled(scene)) {
-        if (count == 0 || dt == 0) return MOTUS_OK;
+        if (count == 0) return MOTUS_OK;
+        if (dt == 0) return motus_state_check(scene, state, 0, count, NULL); /* nothing moves; bad data is reported */
         motus__job_init(&job, scene, state, dims, dt);
         return motus__run(&job, scene, state, dims, 0, count);
     }
@@ -2317,7 +2320,8 @@ MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *s
     if (scratch_bytes < motus_scratch_size(scene, state) || (!scratch && count > 0) ||
         (uintptr_t)scratch % offsetof(motus__align_probe, r) != 0)
         return MOTUS_ERROR_SCRATCH_TOO_SMALL;
-    if (count == 0 || dt == 0) return MOTUS_OK;
+    if (count == 0) return MOTUS_OK;
+    if (dt == 0) return motus_state_check(scene, state, 0, count, NULL);
     evaluations = motus_method_evaluations(scene->method);
 #ifdef MOTUS_CHECKED
     {
@@ -2415,7 +2419,8 @@ MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const
         }
 #undef MOTUS__W
     }
-    decay = scene->linear_drag + 2 * scene->quadratic_drag * fastest + spring_decay;
+    /* quadratic drag's rate at the fastest speed is 2*c*|v|; c*|v| first, as (2*c)*0 would be Inf*0 = NaN */
+    decay = scene->linear_drag + 2 * (scene->quadratic_drag * fastest) + spring_decay;
     *max_dt = motus__stable_dt(scene->method, omega_squared, decay);
     return MOTUS_OK;
 }

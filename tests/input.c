@@ -683,13 +683,15 @@ TEST(bad_time_steps_and_dt_zero) {
                            motus_step_range(&W.scene, &W.state, 0, BN, bad_dt(b)));
                     EXPECT(MOTUS_ERROR_INVALID_TIME_STEP, "bad dt, empty range", motus_step_range(&W.scene, &W.state, 3, 0, bad_dt(b)));
                 }
-                /* dt 0 and -0: a valid step of nothing, even with bad data in the state. */
+                /* dt 0 and -0: a valid step of nothing; bad data in the state is still reported. */
                 EXPECT(MOTUS_OK, "dt 0", motus_step(&W.scene, &W.state, 0, W.scratch, sizeof W.scratch));
                 EXPECT(MOTUS_OK, "dt -0", motus_step(&W.scene, &W.state, negative_zero(), W.scratch, sizeof W.scratch));
                 if (!coupled) EXPECT(MOTUS_OK, "dt 0", motus_step_range(&W.scene, &W.state, 0, BN, 0));
                 barray(BVX)[3] = not_a_number();
                 memcpy(&CLEAN, &W, sizeof W);
-                EXPECT(MOTUS_OK, "dt 0, NaN velocity", motus_step(&W.scene, &W.state, 0, W.scratch, sizeof W.scratch));
+                EXPECT(MOTUS_ERROR_NOT_FINITE, "dt 0, NaN velocity", motus_step(&W.scene, &W.state, 0, W.scratch, sizeof W.scratch));
+                if (!coupled)
+                    EXPECT(MOTUS_ERROR_NOT_FINITE, "dt 0, NaN velocity", motus_step_range(&W.scene, &W.state, 0, BN, 0));
             }
 }
 

@@ -404,8 +404,18 @@ TEST(scene_max_stable_dt_bounds_the_springs) {
     c.scene.linear_drag = 40;
     ENSURE_EQ_INT(scene_max_dt(&c.scene, &c.state, &dt), MOTUS_OK);
     ENSURE_NEAR(dt, 2 / 40.0, 4 * EPS);
-    /* Nothing that limits: +Inf, and no scratch needed without springs. */
+    /* The largest quadratic drag on particles at rest limits nothing (found by the fuzzer: 2*c overflowed
+       and times a speed of 0 gave NaN); at a speed it gives a finite, positive or zero dt. */
     c.scene.linear_drag = 0;
+    c.scene.quadratic_drag = REAL_MAX;
+    ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &dt, NULL, 0), MOTUS_OK);
+    ENSURE(!motus_real_is_finite(dt) && dt > 0);
+    c.v[0][2] = 1;
+    ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &dt, NULL, 0), MOTUS_OK);
+    ENSURE(dt >= 0 && dt < 1);
+    c.v[0][2] = 0;
+    c.scene.quadratic_drag = 0;
+    /* Nothing that limits: +Inf, and no scratch needed without springs. */
     ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &dt, NULL, 0), MOTUS_OK);
     ENSURE(!motus_real_is_finite(dt) && dt > 0);
     /* Every method: its limit over the same w (the table of >>methods). */

@@ -441,6 +441,52 @@ TEST(dt_zero_is_a_valid_no_op) {
         }
 }
 
+/* dt == 0 moves nothing but still reports bad data (found by the fuzzer: a NaN velocity stepped by 0
+   came back MOTUS_OK). Nothing is written. */
+TEST(dt_zero_still_reports_bad_data) {
+    motus_particle p = sample_particle(), before;
+    motus_particle3 q = sample_particle3(), before3, many[3], many_before[3];
+    motus_vec2 carry = motus_v2(0, 0);
+    motus_vec3 carry3 = motus_v3(0, 0, 0);
+    motus_scene scene;
+    motus_state state;
+    motus_spring spring;
+    motus_real scratch[128];
+    int coupled;
+    p.velocity.y = not_a_number();
+    q.position.z = infinity();
+    before = p, before3 = q;
+    ENSURE_EQ_INT(motus_particle_step(&p, 0), MOTUS_ERROR_NOT_FINITE);
+    ENSURE_EQ_INT(motus_particle_step_compensated(&p, &carry, 0), MOTUS_ERROR_NOT_FINITE);
+    ENSURE_UNCHANGED(p, before);
+    ENSURE_EQ_INT(motus_particle3_step(&q, -MOTUS_R(0.0)), MOTUS_ERROR_NOT_FINITE);
+    ENSURE_EQ_INT(motus_particle3_step_compensated(&q, &carry3, 0), MOTUS_ERROR_NOT_FINITE);
+    ENSURE_UNCHANGED(q, before3);
+    p = sample_particle(), p.inverse_mass = -1, before = p;
+    ENSURE_EQ_INT(motus_particle_step(&p, 0), MOTUS_ERROR_INVALID_MASS);
+    ENSURE_UNCHANGED(p, before);
+    for (coupled = 0; coupled < 2; ++coupled) {
+        int i;
+        memset(&scene, 0, sizeof scene);
+        memset(&spring, 0, sizeof spring);
+        if (coupled) {
+            spring.a = 0, spring.b = 2, spring.stiffness = 3;
+            scene.springs = &spring, scene.spring_count = 1;
+        }
+        for (i = 0; i < 3; ++i) motus_particle3_init(&many[i], motus_v3((motus_real)i, 0, 0), 1);
+        many[2].velocity.x = not_a_number();
+        memcpy(many_before, many, sizeof many);
+        state = motus_state_of_particles3(many, 3);
+        ENSURE_EQ_INT(motus_step(&scene, &state, 0, scratch, sizeof scratch), MOTUS_ERROR_NOT_FINITE);
+        ENSURE(same_bytes(many, many_before, sizeof many));
+        if (!coupled) {
+            ENSURE_EQ_INT(motus_step_range(&scene, &state, 1, 2, 0), MOTUS_ERROR_NOT_FINITE);
+            ENSURE_EQ_INT(motus_step_range(&scene, &state, 0, 2, 0), MOTUS_OK); /* the bad one is not in the range */
+            ENSURE(same_bytes(many, many_before, sizeof many));
+        }
+    }
+}
+
 TEST(step_compensated_basics) {
     /* With carry 0 the first step is the plain step's, bit for bit; NULL carry or particle is refused. */
     motus_particle p = sample_particle(), plain = p, before;
@@ -1196,6 +1242,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(step_rejects_broken_particle),
     TEST_CASE(step_reports_overflow),
     TEST_CASE(dt_zero_is_a_valid_no_op),
+    TEST_CASE(dt_zero_still_reports_bad_data),
     TEST_CASE(step_compensated_basics),
     TEST_CASE(damp_per_step_removes_the_fraction),
     TEST_CASE(damp_per_second_is_frame_rate_independent),
