@@ -2102,17 +2102,18 @@ static int motus__layout_of(const motus_scene *scene, const motus_state *state, 
     if (motus__coupled(scene) || contacts) l->copy = (size_t)(3 * dims + 1 + contacts) * real;
 #endif
     if (contacts) {
-        /* each particle's cell (dims ints), the particles sorted by bucket (1), the table (2 per particle,
-           a power of two, + 1), and a pair list of 4 (2D) or 8 (3D) pairs per particle (2 ints each) */
+        /* each particle's cell (dims ints), the particles sorted by bucket (1), by height (1) and their rank
+           in that order (1), whether it is supported (1), the table and the height bins (each 2 per particle, a power of two, + 1), and a
+           pair list of 4 (2D) or 8 (3D) pairs per particle (2 ints each) */
         l->table_size = 1;
         while (l->table_size < 2 * n && l->table_size < ((size_t)1 << 30)) l->table_size *= 2;
         l->pair_capacity = (size_t)(dims == 3 ? 8 : 4) * n;
-        l->contacts = ((size_t)dims + 1 + 2 * (dims == 3 ? 8 : 4)) * index;
+        l->contacts = ((size_t)dims + 4 + 2 * (dims == 3 ? 8 : 4)) * index;
     }
     per_particle = l->coupled + l->copy + l->contacts;
     if (n > 0 && per_particle > ((size_t)-1 - 4 * index) / 2 / n) return 0;
     l->coupled *= n, l->copy *= n, l->contacts *= n;
-    if (contacts) l->contacts += (l->table_size + 1) * index;
+    if (contacts) l->contacts += 2 * (l->table_size + 1) * index;
     l->total = l->coupled + l->copy + l->contacts;
     return 1;
 }
@@ -2357,12 +2358,18 @@ typedef struct motus__contact_job {
     motus_real restitution, wall_restitution, threshold, friction;
     motus_real lo[3], hi[3];
     motus_real inverse_cell, scale, inverse_scale; /* cell = 1/inverse_cell; scale: a power of two, radii ~ 1 */
-    int *cell[3], *sorted, *table;
+    int *cell[3], *sorted, *table, *order, *rank, *supported, shock, up_axis;
+    motus_real up_sign;
     unsigned mask;
     motus_contact_pair *pairs;
     size_t pair_capacity, pair_count;
 } motus__contact_job;
 enum { MOTUS__PAIRS_RECORD, MOTUS__PAIRS_VELOCITY, MOTUS__PAIRS_POSITION };
+/* The solver keeps the pairs nearer than MOTUS__REACH times their radii's sum: a pile whose balls touch
+   after one projection (a gap of a rounding) stays in the list, so a push travels up a column within a
+   pass. Impulses act within MOTUS__TOUCH of touching; projections on overlaps only. */
+#define MOTUS__REACH MOTUS_R(1.1)
+#define MOTUS__TOUCH MOTUS_R(0.01)
 
 static motus_real motus__contact_w(const motus__contact_job *j, int i) {
     return j->inverse_mass ? j->inverse_mass[(ptrdiff_t)i * j->stride] : j->uniform_inverse_mass;
@@ -2383,7 +2390,7 @@ static int motus__floor_int(motus_real q) {
     return (motus_real)t > q ? t - 1 : t;
 }
 
-/* The job of a contact pass over the state, and the grid of its positions: cells of 2.125 times the largest
+/* The job of a contact pass over the state, and the grid of its positions: cells of 2.25 times the largest
    radius (so that touching particles are in the same or neighbouring cells, with room for rounding), at
    least 2^-28 of the largest coordinate (so that a cell number fits an int and a quotient's rounding never
    skips a cell); the particles counting-sorted by bucket into the scratch, in index order within one. */
@@ -2430,7 +2437,7 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     }
     j->grid = largest_radius > 0 && count > 1;
     if (!j->grid) return;
-    cell = largest_radius * MOTUS_R(2.125);
+    cell = largest_radius * MOTUS_R(2.25); /* > 2 * MOTUS__REACH: room for rounding */
     if (largest_coordinate / (motus_real)(1 << 28) > cell) cell = largest_coordinate / (motus_real)(1 << 28);
     if (cell < 4 / (motus_real)MOTUS__REAL_MAX) cell = 4 / (motus_real)MOTUS__REAL_MAX;
     j->inverse_cell = 1 / cell;
@@ -2444,7 +2451,10 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     for (d = 0; d < dims; ++d) j->cell[d] = ints, ints += count;
     j->sorted = ints, ints += count;
     j->table = ints, ints += l->table_size + 1;
-    j->pairs = (motus_contact_pair *)(void *)ints;
+    j->order = ints, ints += count;
+    j->rank = ints, ints += count;
+    j->supported = ints, ints += count;
+    j->pairs = (motus_contact_pair *)(void *)(ints + l->table_size + 1);
     j->pair_capacity = l->pair_capacity;
     j->mask = (unsigned)(l->table_size - 1);
     for (i = 0; i <= (int)l->table_size; ++i) j->table[i] = 0;
@@ -2461,20 +2471,51 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     }
     for (i = (int)l->table_size; i > 0; --i) j->table[i] = j->table[i - 1];
     j->table[0] = 0;
+    /* The solver's order: from the bottom up (against gravity; y without gravity), by a counting sort of the
+       heights into as many bins as the table has buckets, index order within a bin. A pile's floor contacts
+       then come before the rows they carry, so one sweep carries a push up the whole pile. */
+    {
+        int axis = 1, *bins = ints;
+        motus_real sign = 1, low = (motus_real)MOTUS__REAL_MAX, high = -(motus_real)MOTUS__REAL_MAX, to_bin = 0;
+        for (d = 0; d < dims; ++d)
+            if ((g[d] < 0 ? -g[d] : g[d]) > (g[axis] < 0 ? -g[axis] : g[axis])) axis = d;
+        if (g[axis] > 0) sign = -1;
+        j->up_axis = axis, j->up_sign = sign;
+        for (i = 0; i < count; ++i) {
+            const motus_real height = sign * j->x[axis][(ptrdiff_t)i * j->stride] * MOTUS_R(0.5); /* halves: */
+            if (height < low) low = height;                                                  /* no overflow */
+            if (height > high) high = height;
+        }
+        if (high > low) to_bin = (motus_real)(l->table_size - 1) / (high - low);
+        if (!motus_real_is_finite(to_bin)) to_bin = 0;
+        for (i = 0; i <= (int)l->table_size; ++i) bins[i] = 0;
+        for (i = 0; i < count; ++i) {
+            const motus_real height = sign * j->x[axis][(ptrdiff_t)i * j->stride] * MOTUS_R(0.5);
+            int bin = (int)((height - low) * to_bin);
+            if (bin < 0) bin = 0;
+            if (bin > (int)l->table_size - 1) bin = (int)l->table_size - 1;
+            j->rank[i] = bin;
+            ++bins[bin + 1];
+        }
+        for (i = 0; i < (int)l->table_size; ++i) bins[i + 1] += bins[i];
+        for (i = 0; i < count; ++i) j->order[bins[j->rank[i]]++] = i;
+        for (i = 0; i < count; ++i) j->rank[j->order[i]] = i;
+    }
 }
 
-/* Do a and b overlap (distance < the sum of their radii)? If so, the unit normal from a to b and the depth
-   (m). Coincident centres get the normal +x. */
-static int motus__overlap(const motus__contact_job *j, int a, int b, motus_real *normal, motus_real *depth) {
+/* Are a and b nearer than `reach` times the sum of their radii (1: overlapping)? If so, the unit normal from
+   a to b and the depth (m; negative: the gap between them). Coincident centres get the normal +x. */
+static int motus__overlap(const motus__contact_job *j, int a, int b, motus_real reach, motus_real *normal,
+                          motus_real *depth) {
     const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
-    const motus_real sum = (motus__contact_r(j, a) + motus__contact_r(j, b)) * j->scale;
+    const motus_real sum = (motus__contact_r(j, a) + motus__contact_r(j, b)) * j->scale, near = sum * reach;
     motus_real u[3] = {0, 0, 0}, d2 = 0, distance;
     int d;
     for (d = 0; d < j->dims; ++d) {
         u[d] = (j->x[d][pb] - j->x[d][pa]) * j->scale; /* Inf when far apart: no contact */
         d2 += u[d] * u[d];
     }
-    if (!(d2 < sum * sum)) return 0;
+    if (!(d2 < near * near)) return 0;
     distance = MOTUS_SQRT(d2);
     for (d = 0; d < j->dims; ++d) normal[d] = distance > 0 ? u[d] / distance : (motus_real)(d == 0);
     *depth = (sum - distance) * j->inverse_scale;
@@ -2488,13 +2529,23 @@ static int motus__overlap(const motus__contact_job *j, int a, int b, motus_real 
    kinetic energy does not grow. */
 static void motus__pair_velocity(motus__contact_job *j, int a, int b, const motus_real *n) {
     const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
-    const motus_real wa = motus__contact_w(j, a), wb = motus__contact_w(j, b), w = wa + wb;
+    const motus_real wb = motus__contact_w(j, b);
+    motus_real wa = motus__contact_w(j, a), w = wa + wb;
     motus_real vn = 0, target, impulse, t[3] = {0, 0, 0}, t2 = 0, tangential, friction;
     int d;
     if (w == 0) return; /* two immovable particles */
+    if (j->shock) {
+        /* the last sweep: a particle resting on a support (a wall, an immovable particle, or a particle that
+           rests on one) is a support for the one above it (within 60 degrees of up): the impulse moves only
+           the upper one */
+        if (!j->supported[a] || wb == 0 || !(n[j->up_axis] * j->up_sign > MOTUS_R(0.5))) return;
+        j->supported[b] = 1;
+        wa = 0, w = wb;
+    }
     for (d = 0; d < j->dims; ++d) vn += (j->v[d][pb] - j->v[d][pa]) * n[d];
     if (!(vn < 0)) return; /* separating or resting */
-    target = vn < -j->threshold ? -j->restitution * vn : 0;
+    /* the support sweep only stops approaches: the bounces were given by the sweeps before it */
+    target = vn < -j->threshold && !j->shock ? -j->restitution * vn : 0;
     impulse = (target - vn) / w;
     for (d = 0; d < j->dims; ++d) {
         j->v[d][pa] -= impulse * wa * n[d];
@@ -2521,7 +2572,9 @@ static void motus__pair_velocity(motus__contact_job *j, int a, int b, const motu
    projection, not a velocity (split impulse): it removes the overlap without adding energy. */
 static void motus__pair_position(motus__contact_job *j, int a, int b, const motus_real *n, motus_real depth) {
     const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
-    const motus_real wa = motus__contact_w(j, a), wb = motus__contact_w(j, b), w = wa + wb;
+    /* the support sweep: only where b is above a (the normal within 60 degrees of up) */
+    const int carried = j->shock && n[j->up_axis] * j->up_sign > MOTUS_R(0.5);
+    const motus_real wb = motus__contact_w(j, b), wa = carried && wb > 0 ? 0 : motus__contact_w(j, a), w = wa + wb;
     int d;
     if (w == 0) return;
     for (d = 0; d < j->dims; ++d) {
@@ -2551,7 +2604,9 @@ static void motus__wall_contacts(motus__contact_job *j, int i, int action) {
             const motus_real vn = e < 0 ? *v : -*v; /* along the wall's normal */
             motus_real target, change, t2 = 0, tangential, keep;
             int k;
-            if (!(e < 0 ? *x < low : *x > high) || !(vn < 0)) continue;
+            if (!(e < 0 ? *x < low : *x > high)) continue;
+            j->supported[i] = 1;
+            if (!(vn < 0)) continue;
             target = vn < -j->threshold ? -j->wall_restitution * vn : 0;
             change = target - vn;
             *v = e < 0 ? target : -target;
@@ -2567,10 +2622,21 @@ static void motus__wall_contacts(motus__contact_job *j, int i, int action) {
     }
 }
 
+/* A near pair in a phase: impulses within MOTUS__TOUCH of touching, projection where they overlap. */
+static void motus__pair_solve(motus__contact_job *j, int a, int b, int phase, const motus_real *n, motus_real depth) {
+    if (phase == MOTUS__PAIRS_VELOCITY) {
+        const motus_real gap_allowed = (motus__contact_r(j, a) + motus__contact_r(j, b)) * MOTUS__TOUCH;
+        if (-depth <= gap_allowed) motus__pair_velocity(j, a, b, n);
+    } else if (depth > 0) {
+        motus__pair_position(j, a, b, n, depth);
+    }
+}
+
 /* Particle i's contacts with the particles after it: the neighbouring cells' buckets (each once: two cells
    may share one), the particles there within one cell of i in every axis, those that overlap. Records them
    (up to room) or solves them; returns how many there were. */
-static size_t motus__pairs_of(motus__contact_job *j, int i, int action, motus_contact_pair *out, size_t room) {
+static size_t motus__pairs_of(motus__contact_job *j, int i, int action, motus_real reach, motus_contact_pair *out,
+                              size_t room) {
     unsigned visited[27];
     int seen = 0, k, s, c[3] = {0, 0, 0}, o[3];
     size_t found = 0;
@@ -2586,18 +2652,16 @@ static size_t motus__pairs_of(motus__contact_job *j, int i, int action, motus_co
                 visited[seen++] = b;
                 for (other = j->table[b], end = j->table[b + 1]; other < end; ++other) {
                     const int q = j->sorted[other];
-                    if (q <= i) continue;
+                    if (j->rank[q] <= j->rank[i]) continue; /* each pair once, from its lower particle */
                     for (near = 1, k = 0; k < j->dims; ++k) {
                         const int gap = j->cell[k][q] - c[k];
                         near &= gap >= -1 && gap <= 1;
                     }
-                    if (!near || !motus__overlap(j, i, q, n, &depth)) continue;
+                    if (!near || !motus__overlap(j, i, q, reach, n, &depth)) continue;
                     if (action == MOTUS__PAIRS_RECORD) {
                         if (found < room) out[found].a = i, out[found].b = q;
-                    } else if (action == MOTUS__PAIRS_VELOCITY) {
-                        motus__pair_velocity(j, i, q, n);
                     } else {
-                        motus__pair_position(j, i, q, n, depth);
+                        motus__pair_solve(j, i, q, action, n, depth);
                     }
                     ++found;
                 }
@@ -2616,25 +2680,36 @@ static motus_result motus__contacts_pass(const motus_scene *scene, const motus_s
     motus__contact_job_init(j, scene, state, dims, h, memory, l);
     j->listed = 0;
     if (j->grid) {
-        for (i = 0; i < j->count; ++i) {
+        for (k = 0; k < (size_t)j->count; ++k) {
             const size_t room = j->pair_capacity - j->pair_count;
-            const size_t found = motus__pairs_of(j, i, MOTUS__PAIRS_RECORD, j->pairs + j->pair_count, room);
+            const size_t found =
+                motus__pairs_of(j, j->order[k], MOTUS__PAIRS_RECORD, MOTUS__REACH, j->pairs + j->pair_count, room);
             if (found > room) break; /* this particle's pairs and the rest: searched at every sweep */
             j->pair_count += found;
-            j->listed = i + 1;
+            j->listed = (int)k + 1;
         }
     }
+    /* Velocities: the walls first (a pile's floor stops its bottom row before the rows above meet it).
+       Positions: the walls last (nothing leaves the box). Each phase ends with one more sweep that carries
+       a pile's weight (shock propagation, Guendelman, Bridson and Fedkiw 2003): walls first, then each pair
+       from the bottom up with its lower particle counted immovable, so the rows above do not push the rows
+       below back into the floor. For velocities only where the lower one is supported (a wall, an
+       immovable particle, or one resting on them): in free space every impulse stays equal and opposite. */
     for (phase = MOTUS__PAIRS_VELOCITY; phase <= MOTUS__PAIRS_POSITION; ++phase)
-        for (sweep = 0; sweep < j->iterations; ++sweep) {
+        for (sweep = 0; sweep <= j->iterations; ++sweep) {
+            j->shock = sweep == j->iterations;
+            for (i = 0; j->shock && phase == MOTUS__PAIRS_VELOCITY && i < j->count; ++i)
+                j->supported[i] = motus__contact_w(j, i) == 0;
+            for (i = 0; (phase == MOTUS__PAIRS_VELOCITY || j->shock) && j->walls && i < j->count; ++i)
+                motus__wall_contacts(j, i, phase);
             for (k = 0; k < j->pair_count; ++k) {
                 motus_real n[3], depth;
                 const int a = j->pairs[k].a, b = j->pairs[k].b;
-                if (!motus__overlap(j, a, b, n, &depth)) continue;
-                if (phase == MOTUS__PAIRS_VELOCITY) motus__pair_velocity(j, a, b, n);
-                else motus__pair_position(j, a, b, n, depth);
+                if (motus__overlap(j, a, b, MOTUS__REACH, n, &depth)) motus__pair_solve(j, a, b, phase, n, depth);
             }
-            for (i = j->listed; j->grid && i < j->count; ++i) (void)motus__pairs_of(j, i, phase, NULL, 0);
-            for (i = 0; j->walls && i < j->count; ++i) motus__wall_contacts(j, i, phase);
+            for (i = j->listed; j->grid && i < j->count; ++i)
+                (void)motus__pairs_of(j, j->order[i], phase, MOTUS__REACH, NULL, 0);
+            for (i = 0; phase == MOTUS__PAIRS_POSITION && j->walls && i < j->count; ++i) motus__wall_contacts(j, i, phase);
         }
     for (i = 0; i < j->count; ++i)
         for (d = 0; d < dims; ++d)
@@ -2793,7 +2868,7 @@ MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus
     }
     for (i = 0; job.grid && i < state->count; ++i) {
         const size_t room = total < (size_t)capacity ? (size_t)capacity - total : 0;
-        total += motus__pairs_of(&job, i, MOTUS__PAIRS_RECORD, room > 0 ? pairs + total : NULL, room);
+        total += motus__pairs_of(&job, i, MOTUS__PAIRS_RECORD, 1, room > 0 ? pairs + total : NULL, room);
         if (total > (size_t)INT_MAX) return MOTUS_ERROR_INVALID_COUNT;
     }
     *found = (int)total;
