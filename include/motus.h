@@ -2367,7 +2367,7 @@ typedef struct motus__contact_job {
 enum { MOTUS__PAIRS_RECORD, MOTUS__PAIRS_VELOCITY, MOTUS__PAIRS_POSITION };
 /* The solver keeps the pairs nearer than MOTUS__REACH times their radii's sum: a pile whose balls touch
    after one projection (a gap of a rounding) stays in the list, so a push travels up a column within a
-   pass. Impulses act within MOTUS__TOUCH of touching; projections on overlaps only. */
+   pass. Impulses act within MOTUS__TOUCH (of the radii's sum) of touching; projections on overlaps only. */
 #define MOTUS__REACH MOTUS_R(1.1)
 #define MOTUS__TOUCH MOTUS_R(0.01)
 
@@ -2435,7 +2435,17 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
             if (m > largest_coordinate) largest_coordinate = m;
         }
     }
+    for (d = 0; d < dims; ++d) j->cell[d] = ints, ints += count;
+    j->sorted = ints, ints += count;
+    j->table = ints, ints += l->table_size + 1;
+    j->order = ints, ints += count;
+    j->rank = ints, ints += count;
+    j->supported = ints, ints += count;
+    j->pairs = (motus_contact_pair *)(void *)(ints + l->table_size + 1);
+    j->pair_capacity = l->pair_capacity;
+    j->mask = (unsigned)(l->table_size - 1);
     j->grid = largest_radius > 0 && count > 1;
+    for (i = 0; i < count; ++i) j->order[i] = j->rank[i] = i; /* index order until the grid sorts them */
     if (!j->grid) return;
     cell = largest_radius * MOTUS_R(2.25); /* > 2 * MOTUS__REACH: room for rounding */
     if (largest_coordinate / (motus_real)(1 << 28) > cell) cell = largest_coordinate / (motus_real)(1 << 28);
@@ -2447,16 +2457,6 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     while (j->scale * largest_radius > 2 && j->scale > 4 / (motus_real)MOTUS__REAL_MAX) j->scale *= MOTUS_R(0.5);
     while (j->scale * largest_radius < MOTUS_R(0.25) && j->scale < (motus_real)MOTUS__REAL_MAX / 4) j->scale *= 2;
     j->inverse_scale = 1 / j->scale;
-    for (d = 0; d < 3; ++d) j->cell[d] = NULL;
-    for (d = 0; d < dims; ++d) j->cell[d] = ints, ints += count;
-    j->sorted = ints, ints += count;
-    j->table = ints, ints += l->table_size + 1;
-    j->order = ints, ints += count;
-    j->rank = ints, ints += count;
-    j->supported = ints, ints += count;
-    j->pairs = (motus_contact_pair *)(void *)(ints + l->table_size + 1);
-    j->pair_capacity = l->pair_capacity;
-    j->mask = (unsigned)(l->table_size - 1);
     for (i = 0; i <= (int)l->table_size; ++i) j->table[i] = 0;
     for (i = 0; i < count; ++i) {
         int k[3] = {0, 0, 0};
@@ -2868,8 +2868,15 @@ MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus
     }
     for (i = 0; job.grid && i < state->count; ++i) {
         const size_t room = total < (size_t)capacity ? (size_t)capacity - total : 0;
-        total += motus__pairs_of(&job, i, MOTUS__PAIRS_RECORD, 1, room > 0 ? pairs + total : NULL, room);
+        const size_t from = total;
+        size_t k;
+        total += motus__pairs_of(&job, job.order[i], MOTUS__PAIRS_RECORD, 1, room > 0 ? pairs + total : NULL, room);
         if (total > (size_t)INT_MAX) return MOTUS_ERROR_INVALID_COUNT;
+        for (k = from; k < total && k < (size_t)capacity; ++k)
+            if (pairs[k].a > pairs[k].b) {
+                const int swap = pairs[k].a;
+                pairs[k].a = pairs[k].b, pairs[k].b = swap;
+            }
     }
     *found = (int)total;
     return MOTUS_OK;
