@@ -1081,7 +1081,8 @@ MOTUS_DEF motus_result motus_max_stable_dt(motus_method method, motus_real stiff
        1e-30 N/m on 1e30 kg is a finite 2e30 s for semi-implicit Euler). */
     {
         const motus_real limit = motus_method_stability_limit(method);
-        *max_dt = !motus_real_is_finite(limit) ? limit : limit * (MOTUS_SQRT(mass) / MOTUS_SQRT(stiffness));
+        /* limit 0 (explicit Euler, midpoint): 0 at any stiffness, not 0 * Inf when the root ratio overflows */
+        *max_dt = !motus_real_is_finite(limit) || limit == 0 ? limit : limit * (MOTUS_SQRT(mass) / MOTUS_SQRT(stiffness));
     }
     return MOTUS_OK;
 }

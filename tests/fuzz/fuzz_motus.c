@@ -530,10 +530,12 @@ static int verbose; /* FUZZ_MOTUS_VERBOSE set: each step says what it was given 
 static unsigned long reached[MOTUS_METHOD_COUNT][2];
 
 /* ---- the engine calls ---- */
+#ifndef MOTUS_CHECKED
 static int walls_on(const motus_scene *scene, int dims) {
     return scene->bounds_min.x != 0 || scene->bounds_min.y != 0 || scene->bounds_max.x != 0 || scene->bounds_max.y != 0 ||
            (dims == 3 && (scene->bounds_min.z != 0 || scene->bounds_max.z != 0));
 }
+#endif
 static void step_operation(world *w, reader *r, int ranged) {
     motus_state s = variant(w, r);
     const motus_real dt = read_dt(r);
