@@ -2643,10 +2643,15 @@ static void motus__pair_velocity(motus__contact_job *j, int a, int b, const motu
     allowed = gap > 0 ? -gap / j->h : 0;
     if (j->shock) {
         /* the last sweep: a particle resting on a support (a wall, an immovable particle, or a particle that
-           rests on one) is a support for the one above it: the impulse moves only the upper one */
+           rests on one) is a support for the one above it: the impulse moves only the upper one. A support
+           that moves into it is taken as still (the sweeps before dealt with that): the support sweep only
+           stops, it never throws (energy is not made) */
+        motus_real support = 0;
         if (!j->supported[a] || wb == 0 || !(n[j->up_axis] * j->up_sign > 0)) return;
         j->supported[b] = 1;
         wa = 0, w = wb;
+        for (d = 0; d < j->dims; ++d) support += j->v[d][pa] * n[d];
+        if (support > 0) vn += support; /* vn as against a still support */
     }
     if (!(vn < allowed)) return; /* separating, or resting */
     target = fast ? -j->restitution * vn : allowed;
