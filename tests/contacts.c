@@ -31,7 +31,7 @@ typedef struct world {
     motus_state state;
     motus_real x[3][CAPACITY], v[3][CAPACITY], inverse_mass[CAPACITY], radius[CAPACITY];
     motus_contact_pair pairs[16 * CAPACITY];
-    unsigned char scratch[CAPACITY * 256];
+    unsigned char scratch[CAPACITY * 512];
 } world;
 static world W, BEFORE;
 
