@@ -19,10 +19,15 @@
      K  random kicks, up to 400 N each way    state.force too: a new random force every frame
      D  damping, 50% of the speed removed     scene.damping_per_second
         per second
+     C  collisions: the particles are balls   scene.contacts (enabled, friction 0.3, restitution 0.3) and
+        of their drawn size that bounce off    state.radius (each one's drawn radius); the window's edges
+        one another and come to rest in a      become walls the balls rest against at their radius, keeping
+        pile on the floor                      30% of the speed; motus_step then needs scratch memory
+                                              (motus_scratch_size bytes, allocated here when it grows)
      M  the next integrator                   scene.method (semi-implicit Euler first; all nine take this scene)
      R  reset: every particle back where it started (the same seeded start)
    and always: each particle's own mass (state.inverse_mass) and the window's edges, where particles bounce
-   and keep 90% of their speed (scene.bounds_min/max, scene.restitution). With neither wind nor kicks
+   and keep 90% of their speed (scene.bounds_min/max, scene.restitution; 30% with collisions). With neither wind nor kicks
    state.force is NULL and the force arrays are not read. The HUD lights the scene's terms that are on, names
    the method and shows the time the one motus_step call for all particles took each frame, measured here on
    this machine (a moving average; a timing, not a property of motus; with few particles it is mostly the
@@ -31,7 +36,7 @@
    The step is a fixed dt = 1/60 s per frame, whatever the measured frame time: the motion depends on the
    number of frames only, so a run under a virtual X server (Xvfb), slow or not, ends where a real one does.
 
-   Keys: G, W, K, D toggle, M cycles the method, R resets (see above); Escape quits.
+   Keys: G, W, K, D, C toggle, M cycles the method, R resets (see above); Escape quits.
    Options, so that a script can drive it without a person (defaults: the interactive program):
      --frames N            stop after N frames (default: run until the window is closed or Escape)
      --particles N         how many, 1 to 65536 (default 5000)
@@ -40,15 +45,21 @@
      --wind on|off
      --random on|off
      --damping on|off
+     --collisions on|off   (default off)
      --method NAME         the first method, by motus_method_name ("rk4"; default semi_implicit_euler)
      --screenshot FILE     save the last frame as a PNG
    On exit it prints one line: the scene it ended with (its terms that are on, and the method), how many key
    presses changed something, how many resets and steps since the last, how many particles are inside the
-   window (all of them: they bounce) and their mean position and velocity, e.g.
+   window (all of them: they bounce) and how many are drawn whole inside it (their disc within 0.01 px of the
+   window), their mean position and velocity and root-mean-square speed, and the overlaps between the balls
+   as drawn (found by motus_find_contacts whether collisions are on or not): how many pairs overlap, the
+   largest overlap in px and as a share of the smaller radius of its pair, e.g.
      frames=300 particles=5000 scene=gravity|bounds|state.force|state.inverse_mass method=semi_implicit_euler
-     gravity=1 wind=0 random=1 damping=0 toggles=0 resets=0 steps=300 inside=5000 mean_x=... us_per_step=40.5
-   (one line). us_per_step is a measurement; every other number is the same on every run with the same
-   options. */
+     gravity=1 wind=0 random=1 damping=0 collisions=0 toggles=0 resets=0 steps=300 inside=5000 whole=5000
+     mean_x=... rms_speed=... overlaps=2716 max_overlap=8.102 overlap_ratio=1.000 us_per_step=40.5 fps=59.9
+   (one line). us_per_step (the moving average of the motus_step call) and fps (frames over the wall-clock
+   time of the run, drawing included; at most 60, the target) are measurements; every other number is the
+   same on every run with the same options. */
 #define MOTUS_IMPLEMENTATION /* this file compiles the engine: motus_step */
 #include "motus.h"
 #include "raylib.h"
@@ -67,6 +78,8 @@
 #define KICK 400.0f              /* N: each random kick's components are uniform in [-KICK, KICK] */
 #define DAMPING_PER_SECOND 0.5f  /* fraction of the speed removed per second when damping is on */
 #define RESTITUTION 0.9f         /* speed kept through a bounce */
+#define CONTACT_RESTITUTION 0.3f /* with collisions: speed kept through a bounce, between balls and on the walls */
+#define CONTACT_FRICTION 0.3f    /* with collisions: Coulomb coefficient between balls and on the walls */
 #define MIN_MASS 0.5f
 #define MAX_MASS 2.0f
 #define MAX_SPEED 120.0f         /* px/s: each starting velocity component is uniform in [-MAX_SPEED, MAX_SPEED] */
@@ -109,7 +122,7 @@ static float radius[MAX_PARTICLES];
 static Color colour[MAX_PARTICLES];
 
 typedef struct toggles {
-    int gravity, wind, random, damping;
+    int gravity, wind, random, damping, collisions;
     motus_method method;
     long presses; /* key presses that changed something (R included) */
 } toggles;
@@ -134,6 +147,8 @@ typedef struct sandbox {
     motus_result last_result;
     unsigned long long random_state;
     Texture2D dot; /* a white disc with a soft edge, tinted per particle */
+    void *scratch; /* motus_step's working memory with collisions on (grown when motus_scratch_size asks more) */
+    size_t scratch_bytes;
 } sandbox;
 
 /* ---- a small random generator: PCG32 (O'Neill 2014), 64-bit LCG state, permuted 32-bit output ---- */
@@ -196,7 +211,8 @@ static int parse_options(int argc, char **argv, options *out) {
         } else if (!((strcmp(name, "--gravity") == 0 && parse_switch(value, &out->start.gravity)) ||
                      (strcmp(name, "--wind") == 0 && parse_switch(value, &out->start.wind)) ||
                      (strcmp(name, "--random") == 0 && parse_switch(value, &out->start.random)) ||
-                     (strcmp(name, "--damping") == 0 && parse_switch(value, &out->start.damping)))) {
+                     (strcmp(name, "--damping") == 0 && parse_switch(value, &out->start.damping)) ||
+                     (strcmp(name, "--collisions") == 0 && parse_switch(value, &out->start.collisions)))) {
             return 0;
         }
     }
@@ -242,6 +258,17 @@ static motus_scene scene_from(const toggles *on) {
     scene.bounds_min = motus_v3(MAX_RADIUS, MAX_RADIUS, 0);
     scene.bounds_max = motus_v3(WINDOW_WIDTH - MAX_RADIUS, WINDOW_HEIGHT - MAX_RADIUS, 0);
     scene.restitution = RESTITUTION;
+    if (on->collisions) {
+        /* Balls of their drawn radius (state.radius): the walls are the window's edges, which each ball
+           touches at its own radius; restitution_threshold 0 is motus's automatic one (a few frames of
+           gravity), below which a contact does not bounce, so that the pile comes to rest. */
+        scene.contacts.enabled = 1;
+        scene.contacts.restitution = CONTACT_RESTITUTION;
+        scene.contacts.friction = CONTACT_FRICTION;
+        scene.bounds_min = motus_v3(0, 0, 0);
+        scene.bounds_max = motus_v3(WINDOW_WIDTH, WINDOW_HEIGHT, 0);
+        scene.restitution = CONTACT_RESTITUTION;
+    }
     return scene;
 }
 
@@ -260,6 +287,7 @@ static motus_state state_from(const sandbox *s) {
         state.force[1] = force_y;
     }
     state.inverse_mass = inverse_mass;
+    if (s->on.collisions) state.radius = radius;
     return state;
 }
 
@@ -285,8 +313,22 @@ static void handle_keys(sandbox *s) {
     if (IsKeyPressed(KEY_W)) s->on.wind = !s->on.wind, ++s->on.presses;
     if (IsKeyPressed(KEY_K)) s->on.random = !s->on.random, ++s->on.presses;
     if (IsKeyPressed(KEY_D)) s->on.damping = !s->on.damping, ++s->on.presses;
+    if (IsKeyPressed(KEY_C)) s->on.collisions = !s->on.collisions, ++s->on.presses;
     if (IsKeyPressed(KEY_M)) s->on.method = (motus_method)((s->on.method + 1) % MOTUS_METHOD_COUNT), ++s->on.presses;
     if (IsKeyPressed(KEY_R)) sandbox_place(s), ++s->resets, ++s->on.presses;
+}
+
+/* Room for motus_step's scratch: none without collisions; with them, motus_scratch_size bytes (the contacts'
+   grid and pair list), allocated here once it grows, never in the step. Returns 0 if it cannot be had. */
+static int ensure_scratch(sandbox *s, const motus_scene *scene, const motus_state *state) {
+    const size_t bytes = motus_scratch_size(scene, state);
+    void *grown;
+    if (bytes == (size_t)-1) return 0;
+    if (bytes <= s->scratch_bytes) return 1;
+    grown = realloc(s->scratch, bytes); /* malloc's alignment suits any motus_real */
+    if (!grown) return 0;
+    s->scratch = grown, s->scratch_bytes = bytes;
+    return 1;
 }
 
 static void sandbox_step(sandbox *s) {
@@ -295,9 +337,13 @@ static void sandbox_step(sandbox *s) {
     s->scene = scene_from(&s->on);
     s->state = state_from(s);
     if (s->state.force[0]) fill_forces(s);
+    if (!ensure_scratch(s, &s->scene, &s->state)) {
+        fprintf(stderr, "sandbox: no memory for motus_step's scratch\n");
+        exit(1);
+    }
 
     start = GetTime();
-    result = motus_step(&s->scene, &s->state, DT, NULL, 0); /* no springs or callback: no scratch */
+    result = motus_step(&s->scene, &s->state, DT, s->scratch, s->scratch_bytes);
     ++s->steps;
     us = (GetTime() - start) * 1e6;
     /* The plain mean of the first measurements, so that the first (cold caches, first touch of the arrays'
@@ -312,12 +358,12 @@ static void sandbox_step(sandbox *s) {
 
 /* ---- drawing -------------------------------------------------------------------------------------- */
 /* The terms of the scene and state the sandbox can switch on (and the ones it never does, shown unlit). */
-#define TERM_COUNT 9
+#define TERM_COUNT 10
 static void scene_terms(const motus_scene *scene, const motus_state *state, const char *names[TERM_COUNT],
                         int on[TERM_COUNT]) {
     static const char *const NAMES[TERM_COUNT] = {"gravity", "linear_drag", "quadratic_drag", "damping_per_step",
                                                   "damping_per_second", "attractor", "bounds", "state.force",
-                                                  "state.inverse_mass"};
+                                                  "state.inverse_mass", "contacts"};
     int i;
     for (i = 0; i < TERM_COUNT; ++i) names[i] = NAMES[i];
     on[0] = scene->gravity.x != 0 || scene->gravity.y != 0;
@@ -330,6 +376,7 @@ static void scene_terms(const motus_scene *scene, const motus_state *state, cons
             scene->bounds_max.y != 0;
     on[7] = state->force[0] != NULL;
     on[8] = state->inverse_mass != NULL;
+    on[9] = scene->contacts.enabled != 0; /* with state.radius */
 }
 
 /* "gravity|bounds|state.inverse_mass", or "none". */
@@ -384,7 +431,7 @@ static void draw_hud(const sandbox *s) {
     struct {
         const char *key, *what;
         int on;
-    } keys[4];
+    } keys[5];
     int i, x;
 
     DrawRectangle(0, 0, WINDOW_WIDTH, TOP_BAR_HEIGHT, PANEL);
@@ -414,10 +461,11 @@ static void draw_hud(const sandbox *s) {
     keys[1].key = "W", keys[1].what = "wind", keys[1].on = s->on.wind;
     keys[2].key = "K", keys[2].what = "random kicks", keys[2].on = s->on.random;
     keys[3].key = "D", keys[3].what = "damping", keys[3].on = s->on.damping;
+    keys[4].key = "C", keys[4].what = "collisions", keys[4].on = s->on.collisions;
     DrawRectangle(0, WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT, WINDOW_WIDTH, BOTTOM_BAR_HEIGHT, PANEL);
     DrawLine(0, WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT, WINDOW_WIDTH, WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT, RULE);
     x = 14;
-    for (i = 0; i < 4; ++i) {
+    for (i = 0; i < 5; ++i) {
         const char *label = TextFormat("[%s] %s %s", keys[i].key, keys[i].what, keys[i].on ? "on" : "off");
         DrawText(label, x, help_y, 10, keys[i].on ? LIT : TEXT_DIM);
         x += MeasureText(label, 10) + 24;
@@ -433,35 +481,87 @@ static void draw(const sandbox *s) {
 }
 
 /* ---- the run -------------------------------------------------------------------------------------- */
-static void print_summary(const sandbox *s, long frames) {
-    double sum_x = 0, sum_y = 0, sum_vx = 0, sum_vy = 0;
+typedef struct overlaps {
+    long pairs;          /* pairs of balls (of their drawn radius) that overlap, -1 if they could not be found */
+    double largest;      /* px */
+    double largest_share; /* of the smaller radius of the pair */
+} overlaps;
+
+/* The balls as drawn that overlap now, by motus_find_contacts (the step's broadphase; the scene and state as
+   with collisions on, whatever the toggles say). */
+static overlaps find_overlaps(sandbox *s) {
+    overlaps o = {-1, 0, 0};
+    toggles colliding = s->on;
+    motus_scene scene;
+    motus_state state;
+    motus_contact_pair *pairs;
+    int capacity = 4 * s->count, found = 0, k;
+    colliding.collisions = 1;
+    scene = scene_from(&colliding);
+    state = state_from(s);
+    state.radius = radius;
+    for (;;) {
+        pairs = (motus_contact_pair *)malloc((size_t)capacity * sizeof *pairs);
+        if (!pairs || !ensure_scratch(s, &scene, &state) ||
+            motus_find_contacts(&scene, &state, s->scratch, s->scratch_bytes, pairs, capacity, &found) != MOTUS_OK) {
+            free(pairs);
+            return o;
+        }
+        if (found <= capacity) break;
+        free(pairs); /* more than room: again with room for all */
+        capacity = found;
+    }
+    o.pairs = found;
+    for (k = 0; k < found; ++k) {
+        const int a = pairs[k].a, b = pairs[k].b;
+        const double dx = (double)position_x[b] - position_x[a], dy = (double)position_y[b] - position_y[a];
+        const double depth = (double)radius[a] + radius[b] - sqrt(dx * dx + dy * dy);
+        const double smaller = radius[a] < radius[b] ? radius[a] : radius[b];
+        if (depth > o.largest) o.largest = depth;
+        if (depth / smaller > o.largest_share) o.largest_share = depth / smaller;
+    }
+    free(pairs);
+    return o;
+}
+
+static void print_summary(sandbox *s, long frames, double seconds) {
+    double sum_x = 0, sum_y = 0, sum_vx = 0, sum_vy = 0, sum_v2 = 0;
+    const double slack = 0.01; /* px: a ball resting on a wall touches it to rounding */
     char terms[200];
-    int i, inside = 0;
+    int i, inside = 0, whole = 0;
+    overlaps o = find_overlaps(s);
     for (i = 0; i < s->count; ++i) {
-        if (position_x[i] >= 0 && position_x[i] <= WINDOW_WIDTH && position_y[i] >= 0 && position_y[i] <= WINDOW_HEIGHT)
-            ++inside;
-        sum_x += position_x[i];
-        sum_y += position_y[i];
+        const double x = position_x[i], y = position_y[i], r = radius[i];
+        if (x >= 0 && x <= WINDOW_WIDTH && y >= 0 && y <= WINDOW_HEIGHT) ++inside;
+        if (x - r >= -slack && x + r <= WINDOW_WIDTH + slack && y - r >= -slack && y + r <= WINDOW_HEIGHT + slack)
+            ++whole;
+        sum_x += x;
+        sum_y += y;
         sum_vx += velocity_x[i];
         sum_vy += velocity_y[i];
+        sum_v2 += (double)velocity_x[i] * velocity_x[i] + (double)velocity_y[i] * velocity_y[i];
     }
     terms_text(&s->scene, &s->state, terms, sizeof terms);
-    printf("frames=%ld particles=%d scene=%s method=%s gravity=%d wind=%d random=%d damping=%d toggles=%ld "
-           "resets=%ld steps=%ld inside=%d mean_x=%.3f mean_y=%.3f mean_vx=%.3f mean_vy=%.3f us_per_step=%.3f\n",
+    printf("frames=%ld particles=%d scene=%s method=%s gravity=%d wind=%d random=%d damping=%d collisions=%d "
+           "toggles=%ld resets=%ld steps=%ld inside=%d whole=%d mean_x=%.3f mean_y=%.3f mean_vx=%.3f mean_vy=%.3f "
+           "rms_speed=%.3f overlaps=%ld max_overlap=%.4f overlap_ratio=%.5f us_per_step=%.3f fps=%.1f\n",
            frames, s->count, terms, motus_method_name(s->scene.method), s->on.gravity, s->on.wind, s->on.random,
-           s->on.damping, s->on.presses, s->resets, s->steps, inside, sum_x / s->count, sum_y / s->count,
-           sum_vx / s->count, sum_vy / s->count, s->us_per_step);
+           s->on.damping, s->on.collisions, s->on.presses, s->resets, s->steps, inside, whole, sum_x / s->count,
+           sum_y / s->count, sum_vx / s->count, sum_vy / s->count, sqrt(sum_v2 / s->count), o.pairs, o.largest,
+           o.largest_share, s->us_per_step, seconds > 0 ? frames / seconds : 0.0);
 }
 
 int main(int argc, char **argv) {
     static sandbox s;
     options opts;
     long frame;
+    double started;
 
     if (!parse_options(argc, argv, &opts)) {
         fprintf(stderr,
                 "usage: %s [--frames N] [--particles N] [--seed N] [--gravity on|off] [--wind on|off]\n"
-                "       [--random on|off] [--damping on|off] [--method NAME] [--screenshot FILE]\n",
+                "       [--random on|off] [--damping on|off] [--collisions on|off] [--method NAME]\n"
+                "       [--screenshot FILE]\n",
                 argv[0]);
         return 2;
     }
@@ -478,6 +578,7 @@ int main(int argc, char **argv) {
     SetTargetFPS(60);
     s.dot = make_dot();
 
+    started = GetTime();
     for (frame = 0; !WindowShouldClose() && (opts.frames == 0 || frame < opts.frames); ++frame) {
         handle_keys(&s);
         sandbox_step(&s);
@@ -485,6 +586,7 @@ int main(int argc, char **argv) {
         draw(&s);
         EndDrawing();
     }
+    started = GetTime() - started; /* the run's seconds, for fps */
 
     if (opts.screenshot) {
         /* As in wsad.c: draw the last frame into an off-screen texture and save that. */
@@ -504,6 +606,7 @@ int main(int argc, char **argv) {
     UnloadTexture(s.dot);
     CloseWindow();
 
-    print_summary(&s, frame);
+    print_summary(&s, frame, started);
+    free(s.scratch);
     return 0;
 }

@@ -13,12 +13,23 @@
 #   methods   60 frames with gravity, wind and kicks under each of the nine methods (--method): each run
 #             keeps every particle inside, prints its method, and gravity and wind move the mean the same
 #             way under every method (mean_y and mean_x over 50 px past those after one calm frame).
-#   key_g, key_w, key_k, key_d, key_m, key_r
-#             start with gravity, wind and damping off and random kicks on, hold the key with real key
-#             events (xdotool), then Escape: exactly one change, of that key's switch, and scene= follows it
+#   collisions
+#             600 frames (10 s) with gravity and collisions on, no kicks, and a screenshot
+#             (OUTPUT_DIR/sandbox_collisions.png): the balls have piled up on the floor and rest there: scene=
+#             names contacts, every ball is drawn whole inside the window, the largest overlap between two
+#             balls (motus_find_contacts, printed as overlap_ratio, a share of the smaller radius) is below 1%,
+#             the pile's rms speed is below 3 px/s (a ball's fall through one radius under gravity is 40 px/s)
+#             and its mean height is that of a pile on the floor (mean_y > 400 px: the balls' area fills the
+#             lower 300 px of the window); the same run with collisions off, as a control, has the balls
+#             overlapping (overlap_ratio > 0.5) and not resting.
+#   key_g, key_w, key_k, key_d, key_m, key_r, key_c
+#             start with gravity, wind, damping and collisions off and random kicks on, hold the key with real
+#             key events (xdotool), then Escape: exactly one change, of that key's switch, and scene= follows it
 #             (G: gravity; W: wind on, state.force; K: kicks off and, without wind, no state.force; D:
 #             damping_per_second; M: the method after semi-implicit Euler, explicit_euler; R: one reset, so
-#             fewer steps since it than frames).
+#             fewer steps since it than frames). C starts with gravity on and kicks off, and instead of Escape
+#             lets the run end after 600 frames: collisions=1, scene= names contacts, and the balls rest in a
+#             pile as in `collisions` (every ball whole inside the window, largest overlap below 1%).
 set -eu
 binary=$1 mode=$2 out=$3
 for tool in xvfb-run python3; do
@@ -34,6 +45,20 @@ has_flag() { field scene "$2" | tr '|' '\n' | grep -qx "$1"; }
 summary() { grep '^frames=' "$1" || { echo "FAILED: no summary line in $1" >&2; cat "$1" >&2; return 1; }; }
 all_inside() {
     [ "$(field inside "$1")" = "$(field particles "$1")" ] || { echo "FAILED: not every particle is inside: $1"; return 1; }
+}
+# check_pile LINE: the balls rest in a pile on the floor, drawn whole inside the window, overlapping by less
+# than 1% of a radius.
+check_pile() {
+    [ "$(field whole "$1")" = "$(field particles "$1")" ] ||
+        { echo "FAILED: not every ball is drawn whole inside the window: $1"; return 1; }
+    awk -v ratio="$(field overlap_ratio "$1")" -v px="$(field max_overlap "$1")" -v rms="$(field rms_speed "$1")" \
+        -v y="$(field mean_y "$1")" 'BEGIN {
+        failed = 0
+        printf "pile: largest overlap %.4f px = %.5f of the smaller radius, rms speed %.3f px/s, mean_y %.1f px\n", px, ratio, rms, y
+        if (!(ratio < 0.01)) { print "FAILED: the balls overlap by 1% of a radius or more"; failed = 1 }
+        if (!(rms < 3)) { print "FAILED: the pile should be at rest (rms speed < 3 px/s)"; failed = 1 }
+        if (!(y > 400)) { print "FAILED: the balls should lie on the floor (mean_y > 400 px)"; failed = 1 }
+        exit failed }'
 }
 run() { # run NAME OPTIONS...: a headless run, its line on stdout
     name=$1
@@ -72,7 +97,7 @@ headless)
         exit failed
     }' || failed=1
     # Reproducible: the same options give the same line, but for the measured time.
-    strip() { echo "$1" | sed 's/ us_per_step=[^ ]*//'; }
+    strip() { echo "$1" | sed 's/ us_per_step=[^ ]*//; s/ fps=[^ ]*//'; }
     [ "$(strip "$both")" = "$(strip "$again")" ] || { echo "FAILED: the same options gave different runs"; failed=1; }
     [ "$failed" = 0 ] || exit 1
     # The picture: between the bars (84 px at the top, 26 at the bottom), bright saturated pixels of every
@@ -136,6 +161,24 @@ if not lower > 1.5 * upper:
 sys.exit(1 if failed else 0)
 EOF
     ;;
+collisions)
+    png="$out/sandbox_collisions.png"
+    rm -f "$png"
+    pile=$(run collisions --frames 600 --gravity on --random off --collisions on --screenshot "$png")
+    control=$(run collisions_off --frames 600 --gravity on --random off --collisions off)
+    printf '%s\n' "$pile" "$control"
+    failed=0
+    all_inside "$pile" || failed=1
+    [ "$(field collisions "$pile")" = 1 ] && has_flag contacts "$pile" ||
+        { echo "FAILED: --collisions on should give collisions=1 and scene= contacts"; failed=1; }
+    has_flag contacts "$control" && { echo "FAILED: with collisions off scene= names contacts"; failed=1; }
+    [ -s "$png" ] || { echo "FAILED: no screenshot $png"; failed=1; }
+    check_pile "$pile" || failed=1
+    awk -v ratio="$(field overlap_ratio "$control")" 'BEGIN {
+        printf "control, collisions off: largest overlap %.3f of the smaller radius\n", ratio
+        if (!(ratio > 0.5)) { print "FAILED: without collisions the balls should overlap"; exit 1 } }' || failed=1
+    exit $failed
+    ;;
 methods)
     start=$(run start --frames 1 --gravity off --wind off --random off) # (--frames 0 runs until Escape)
     failed=0
@@ -152,22 +195,25 @@ methods)
     done
     exit $failed
     ;;
-key_g | key_w | key_k | key_d | key_m | key_r)
+key_g | key_w | key_k | key_d | key_m | key_r | key_c)
     command -v xdotool >/dev/null 2>&1 || { echo "FAILED: xdotool is not installed (scripts/deps.sh installs it)"; exit 1; }
     key=${mode#key_}
     log="$out/sandbox_$mode.log"
+    # C: gravity on and no kicks, so that the balls pile up; the run ends by itself after 600 frames.
+    if [ "$key" = c ]; then start="--frames 600 --gravity on --random off" last=true
+    else start="--frames 1800 --gravity off --random on" last="xdotool key Escape"; fi
     # As tests/example_wsad.sh: wait for the window, focus it, hold the key (a press-and-release from
     # `xdotool key` can fall between two frames), Escape. --frames is only a safety net.
     xvfb-run -a -s "-screen 0 1024x768x24" sh -c '
-        "$1" --frames 1800 --gravity off --wind off --random on --damping off > "$3" 2>&1 & pid=$!
+        "$1" $4 --wind off --damping off --collisions off > "$3" 2>&1 & pid=$!
         window=$(timeout 30 xdotool search --sync --onlyvisible --name "^motus - sandbox\$" | head -n 1)
         if [ -z "$window" ]; then echo "the example opened no window"; kill $pid; exit 1; fi
         xdotool windowfocus --sync "$window"
         sleep 0.3
         xdotool keydown "$2"; sleep 0.5; xdotool keyup "$2"
         sleep 0.5
-        xdotool key Escape
-        wait $pid' sh "$binary" "$key" "$log"
+        $5
+        wait $pid' sh "$binary" "$key" "$log" "$start" "$last"
     cat "$log"
     line=$(summary "$log")
     all_inside "$line"
@@ -186,11 +232,14 @@ key_g | key_w | key_k | key_d | key_m | key_r)
         { echo "FAILED: M should move from semi_implicit_euler to the next method, explicit_euler"; exit 1; } ;;
     r) [ "$(field resets "$line")" = 1 ] && [ "$(field steps "$line")" -lt "$(field frames "$line")" ] ||
         { echo "FAILED: R should reset once, and the steps since be fewer than the frames"; exit 1; } ;;
+    c) [ "$(field collisions "$line")" = 1 ] && has_flag contacts "$line" ||
+        { echo "FAILED: C should switch collisions on, and scene= name contacts"; exit 1; }
+       check_pile "$line" ;;
     esac
     echo "key $key: changed once, scene=$(field scene "$line") method=$(field method "$line")"
     ;;
 *)
-    echo "usage: $0 SANDBOX_BINARY headless|methods|key_g|key_w|key_k|key_d|key_m|key_r OUTPUT_DIR" >&2
+    echo "usage: $0 SANDBOX_BINARY headless|collisions|methods|key_g|key_w|key_k|key_d|key_m|key_r|key_c OUTPUT_DIR" >&2
     exit 2
     ;;
 esac

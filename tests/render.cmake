@@ -35,3 +35,14 @@ target_compile_definitions(motus_render PRIVATE MOTUS_RENDER_DIR="${MOTUS_RENDER
 target_compile_definitions(motus_render_double PRIVATE MOTUS_DOUBLE MOTUS_RENDER_DIR="${MOTUS_RENDER_DIR}/double")
 motus_register_tests(motus_render "${CMAKE_CURRENT_SOURCE_DIR}/render.c" render render)
 motus_register_tests(motus_render_double "${CMAKE_CURRENT_SOURCE_DIR}/render.c" render.double render)
+
+# Contacts (issue 12): two equal balls colliding head-on (restitution 1 and 0.5), their drawn centroids
+# against the closed form before and after the contact; float and double as above.
+motus_test_program(motus_render_contacts render_contacts.c)
+motus_test_program(motus_render_contacts_double render_contacts.c)
+target_link_libraries(motus_render_contacts PRIVATE motus_canvas)
+target_link_libraries(motus_render_contacts_double PRIVATE motus_canvas)
+target_compile_definitions(motus_render_contacts PRIVATE MOTUS_RENDER_DIR="${MOTUS_RENDER_DIR}")
+target_compile_definitions(motus_render_contacts_double PRIVATE MOTUS_DOUBLE MOTUS_RENDER_DIR="${MOTUS_RENDER_DIR}/double")
+motus_register_tests(motus_render_contacts "${CMAKE_CURRENT_SOURCE_DIR}/render_contacts.c" render render)
+motus_register_tests(motus_render_contacts_double "${CMAKE_CURRENT_SOURCE_DIR}/render_contacts.c" render.double render)
