@@ -80,6 +80,8 @@
 #define RESTITUTION 0.9f         /* speed kept through a bounce */
 #define CONTACT_RESTITUTION 0.3f /* with collisions: speed kept through a bounce, between balls and on the walls */
 #define CONTACT_FRICTION 0.3f    /* with collisions: Coulomb coefficient between balls and on the walls */
+#define CONTACT_SUBSTEPS 2       /* with collisions: a pile 40 balls deep at 300 px/s^2 rests within 10% of a
+                                    radius at 2 substeps (1: about 20%); see >>contacts in motus.h */
 #define MIN_MASS 0.5f
 #define MAX_MASS 2.0f
 #define MAX_SPEED 120.0f         /* px/s: each starting velocity component is uniform in [-MAX_SPEED, MAX_SPEED] */
@@ -263,6 +265,7 @@ static motus_scene scene_from(const toggles *on) {
            touches at its own radius; restitution_threshold 0 is motus's automatic one (a few frames of
            gravity), below which a contact does not bounce, so that the pile comes to rest. */
         scene.contacts.enabled = 1;
+        scene.substeps = CONTACT_SUBSTEPS;
         scene.contacts.restitution = CONTACT_RESTITUTION;
         scene.contacts.friction = CONTACT_FRICTION;
         scene.bounds_min = motus_v3(0, 0, 0);
