@@ -49,10 +49,12 @@ asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|cla
 #   runs under valgrind and ASan (the widths are checked for identical bits in the normal tree only).
 # - engine*.paths_agree_*, stability.*.ten_million_steps: the heaviest runs of code the lighter tests cover
 #   (2,304 scenes per method; 10^7 steps); they run under ASan. bench.*: the benchmarks' quick mode, run in
-#   build/ only (not sanitized either).
+#   build/ only (not sanitized either). contacts.*.pile_of_2000_settles: 2,400 contact passes over 2,000
+#   balls per dimension (10 s natively, most of an hour under valgrind); the contact code runs under valgrind
+#   in the other contacts.* tests and the pile itself under ASan.
 # Script-driven tests (compile.gcc.* ...) run with --trace-children: valgrind follows the programs the script
 # starts from the build tree and skips system programs (compilers, shells' tools) by the skip patterns.
-valgrind_exclude='^(compile\.engine\.|determinism\.|consumer\.|example\.|bench\.|engine(_checked)?\.(float|double)\.paths_agree_|stability\.(float|double)\.ten_million_steps$)'
+valgrind_exclude='^(compile\.engine\.|determinism\.|consumer\.|example\.|bench\.|engine(_checked)?\.(float|double)\.paths_agree_|stability\.(float|double)\.ten_million_steps$|contacts\.[a-z_]+\.pile_of_2000_settles$)'
 valgrind_options="--error-exitcode=1 --trace-children=yes --trace-children-skip=/usr/*,/bin/*,/sbin/* --leak-check=full --show-leak-kinds=definite --errors-for-leak-kinds=definite \
 --track-origins=yes --num-callers=30 --suppressions=$root/tests/support/valgrind.supp"
 
