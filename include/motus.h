@@ -534,7 +534,8 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
    With scene.contacts.enabled each particle is a disc (2D) or a ball (3D) of its radius (state.radius, or
    contacts.radius for all), and every substep is the method, then a contact pass:
    - Broadphase: a spatial hash of cells 2.25 times the largest radius (no world box; the cells grow to
-     2^-28 of the largest coordinate so that a cell number fits an int and rounding never skips a cell),
+     2^-17 (float; 2^-28 double) of the largest coordinate, so that a cell number is exact to 1/128 and
+     rounding never skips a cell),
      the particles counting-sorted by bucket into scratch (O(N), no allocation); each particle looks in the
      3^d cells around its own. The pairs nearer than 1.1 times the sum of their radii are listed in scratch
      (4 per particle in 2D, 8 in 3D; past that, the rest are searched again at each sweep, same order).
@@ -2405,6 +2406,11 @@ MOTUS_API motus_result motus_step_range(const motus_scene *scene, const motus_st
 }
 
 /* ---- contacts (see >>contacts) ---- */
+#ifdef MOTUS_DOUBLE
+#define MOTUS__CELL_RANGE (1 << 28)
+#else
+#define MOTUS__CELL_RANGE (1 << 17)
+#endif
 #ifndef MOTUS_CONTACT_SUPPORT_SWEEPS
 #define MOTUS_CONTACT_SUPPORT_SWEEPS 1
 #endif
@@ -2458,8 +2464,9 @@ static int motus__floor_int(motus_real q) {
 
 /* The job of a contact pass over the state, and the grid of its positions: cells of 2.25 times the largest
    radius (so that touching particles are in the same or neighbouring cells, with room for rounding), at
-   least 2^-28 of the largest coordinate (so that a cell number fits an int and a quotient's rounding never
-   skips a cell); the particles counting-sorted by bucket into the scratch, in index order within one. */
+   least 2^-17 (float; 2^-28 double) of the largest coordinate (so that a cell number fits an int and a
+   quotient's rounding never skips a cell); the particles counting-sorted by bucket into the scratch, in index
+   order within one. */
 static void motus__contact_job_init(motus__contact_job *j, const motus_scene *scene, const motus_state *state,
                                     int dims, motus_real h, void *memory, const motus__layout *l) {
     const motus_contacts *c = &scene->contacts;
@@ -2533,7 +2540,9 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     }
     if (!j->grid) return;
     cell = largest_radius * MOTUS_R(2.25); /* > 2 * MOTUS__REACH: room for rounding */
-    if (largest_coordinate / (motus_real)(1 << 28) > cell) cell = largest_coordinate / (motus_real)(1 << 28);
+    /* a cell number below 2^17 in float (2^28 in double) has an ulp of 1/128 at most: touching particles
+       (less than 2.2/2.25 of a cell apart) never round two cells apart */
+    if (largest_coordinate / (motus_real)MOTUS__CELL_RANGE > cell) cell = largest_coordinate / (motus_real)MOTUS__CELL_RANGE;
     if (cell < 4 / (motus_real)MOTUS__REAL_MAX) cell = 4 / (motus_real)MOTUS__REAL_MAX;
     j->inverse_cell = 1 / cell;
     /* distances in units where the largest pair of radii is about 1: neither their squares nor those of

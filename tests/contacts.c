@@ -31,7 +31,7 @@ typedef struct world {
     motus_state state;
     motus_real x[3][CAPACITY], v[3][CAPACITY], inverse_mass[CAPACITY], radius[CAPACITY];
     motus_contact_pair pairs[16 * CAPACITY];
-    unsigned char scratch[CAPACITY * 512];
+    unsigned char scratch[CAPACITY * 1024];
 } world;
 static world W, BEFORE;
 
@@ -252,7 +252,7 @@ TEST(broadphase_equals_brute_force) {
     int dims, kind;
     random_state = 11;
     for (dims = 2; dims <= 3; ++dims)
-        for (kind = 0; kind < 6; ++kind) {
+        for (kind = 0; kind < 7; ++kind) {
             const int n = kind == 1 ? 300 : 1500;
             int i, d;
             world_init(dims, n, MOTUS_R(0.5));
@@ -263,12 +263,13 @@ TEST(broadphase_equals_brute_force) {
                     if (kind == 2) x = floor(x / 1.125) * 1.125 + (random_next() & 1 ? 0 : 1.125 * 0.5); /* cells */
                     if (kind == 4) x = 3e5 + x; /* far from the origin */
                     if (kind == 5) x = -x;
+                    if (kind == 6) x = 3e6 + x * 4; /* past 2^17 cells: the cells grow with the coordinates */
                     W.x[d][i] = (motus_real)x;
                 }
                 W.radius[i] = random_real(0.05, 1.0);
             }
             if (kind == 3 || kind == 5) W.state.radius = W.radius; /* mixed radii */
-            check_broadphase(kind == 0 ? "random" : kind == 1 ? "cluster" : kind == 2 ? "cell borders" : kind == 3 ? "mixed radii" : kind == 4 ? "far" : "negative, mixed");
+            check_broadphase(kind == 0 ? "random" : kind == 1 ? "cluster" : kind == 2 ? "cell borders" : kind == 3 ? "mixed radii" : kind == 4 ? "far" : kind == 5 ? "negative, mixed" : "very far");
         }
 }
 

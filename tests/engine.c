@@ -247,8 +247,9 @@ static void noop_callback(void *user_data, const motus_force_query *q) {
     }
 }
 
-/* 3D, RK4: (2 + 4) * 3 reals a particle, + 11 for the checked copy; contacts: 32 reals and 28 ints */
-static motus_real SCRATCH[(3 * 6 + 11 + 32 + 28 * 2) * MAX + 8192];
+/* 3D, RK4: (2 + 4) * 3 reals a particle, + 11 for the checked copy; contacts: 64 reals and 44 ints a particle
+   (two pair lists), and the table and bins */
+static motus_real SCRATCH[(3 * 6 + 11 + 64 + 44 * 2) * MAX + 16384];
 static soa A, B, C, D, E;
 
 /* Splits [0, count) into 1..5 ranges (some may be empty) and steps them in a random order. */
