@@ -231,6 +231,8 @@ typedef struct motus_particle3 {
     X(MOTUS_ERROR_INVALID_RESTITUTION, "restitution must be in [0, 1]")                                          \
     X(MOTUS_ERROR_INVALID_SPRING, "a spring's ends must be in [0, count) (b = -1: anchored) and differ; its "     \
                                   "rest length, stiffness and damping >= 0; springs not NULL when counted")      \
+    X(MOTUS_ERROR_INVALID_CONTACTS, "contacts: a radius must be >= 0 and at most the largest real / 8; friction "  \
+                                    "and the restitution threshold >= 0; iterations >= 0")                       \
     X(MOTUS_ERROR_INVALID_METHOD, "method must be one of motus_method")                                          \
     X(MOTUS_ERROR_INVALID_SUBSTEPS, "substeps must be >= 0 (0 and 1 both mean one step)")                        \
     X(MOTUS_ERROR_INVALID_DIMENSIONS, "dimensions must be 2 or 3 (0 means 2)")                                   \
@@ -240,7 +242,7 @@ typedef struct motus_particle3 {
     X(MOTUS_ERROR_SCRATCH_TOO_SMALL, "scratch too small or not aligned: give motus_scratch_size() bytes, aligned " \
                                      "for motus_real")                                                           \
     X(MOTUS_ERROR_UNSUPPORTED, "unsupported: the exact stepper takes gravity, linear drag, damping, bounds and "  \
-                               "accumulated forces only; motus_step_range takes no springs or callback")          \
+                               "accumulated forces only; motus_step_range takes no springs, callback or contacts")  \
     X(MOTUS_ERROR_OVERFLOW, "the inputs were finite but the result would not be (overflow, or a callback's NaN); " \
                             "use a smaller dt or smaller forces")                                                \
     X(MOTUS_ERROR_TOO_STIFF, "too stiff for this dt: more substeps needed than allowed, or the method is "        \
@@ -294,6 +296,23 @@ typedef struct motus_force_query {
 } motus_force_query;
 typedef void (*motus_force_callback)(void *user_data, const motus_force_query *query);
 
+/* Collisions between particles, and walls they rest on (see >>contacts). Zero: off. */
+typedef struct motus_contacts {
+    int enabled;                      /* 1: particles with a radius collide, and the bounds are walls they
+                                         rest against at their radius; 0: particles pass through one another
+                                         and the bounds mirror points (as without contacts) */
+    motus_real radius;                /* m >= 0: every particle's radius when state.radius is NULL */
+    motus_real restitution;           /* in [0, 1]: share of the normal approach speed kept in a particle
+                                         collision (the walls use scene.restitution) */
+    motus_real restitution_threshold; /* m/s >= 0: slower approaches do not bounce (Box2D's threshold). 0:
+                                         4*|gravity|*h, a few substeps of falling, so that what rests rests */
+    motus_real friction;              /* >= 0: Coulomb coefficient on the tangential relative velocity */
+    int iterations;                   /* Gauss-Seidel sweeps per substep (0: 4); more: stiffer piles */
+} motus_contacts;
+typedef struct motus_contact_pair {
+    int a, b; /* particle indices, a < b */
+} motus_contact_pair;
+
 /* Everything that acts on the particles, and how to step them. Zero means default (sokol's descs, Box2D's
    definitions): `motus_scene scene = {0};` (C) or `motus_scene scene{};` (C++) is semi-implicit Euler with
    no forces and particles of 1 kg; set what the scene has. Every term that is zero costs nothing. */
@@ -317,6 +336,7 @@ typedef struct motus_scene {
     int spring_count;
     motus_force_callback force_callback; /* your forces, at every stage (couples: scratch needed) */
     void *user_data;                /* handed to force_callback */
+    motus_contacts contacts;        /* collisions and resting contacts (off while zero) */
 } motus_scene;
 
 /* Where the particles are: one array per component (structure of arrays), or pointers into your own
@@ -329,6 +349,7 @@ typedef struct motus_state {
     motus_real *velocity[3];
     const motus_real *force[3];  /* accumulated forces, N, held over the step; NULL: none */
     const motus_real *inverse_mass; /* 1/kg per particle (0: immovable); NULL: every particle has scene.mass */
+    const motus_real *radius;    /* m per particle, for contacts; NULL: every particle has scene.contacts.radius */
 } motus_state;
 
 /* Where a check found the first bad particle or field. */
@@ -338,13 +359,14 @@ typedef enum motus_field {
     MOTUS_FIELD_VELOCITY,
     MOTUS_FIELD_FORCE,
     MOTUS_FIELD_INVERSE_MASS,
+    MOTUS_FIELD_RADIUS,
     MOTUS_FIELD_COUNT
 } motus_field;
 typedef struct motus_check_report {
     int index;              /* the first bad particle (its index in the state), or -1 */
     motus_field field;
     int component;          /* 0 x, 1 y, 2 z; -1 for the inverse mass and for none */
-    const char *field_name; /* "position", "velocity", "force", "inverse_mass", "none"; or the scene's field
+    const char *field_name; /* "position", "velocity", "force", "inverse_mass", "radius", "none"; or the scene's field
                                ("scene.gravity.y", ...) when the scene is at fault. Never NULL. */
 } motus_check_report;
 
@@ -407,8 +429,9 @@ MOTUS_DEF motus_result motus_substeps_for(motus_real dt, motus_real max_stable_d
 
 /* The engine (compiled where MOTUS_IMPLEMENTATION is defined): */
 /* Advances every particle of `state` by dt under `scene`: scene.substeps steps of dt/substeps, each by
-   scene.method with the bounds after it, then the damping. scratch: motus_scratch_size() bytes for a scene
-   with springs or a callback, else NULL/0. */
+   scene.method with the bounds after it (with contacts on: the contacts and walls after it), then the
+   damping. scratch: motus_scratch_size() bytes for a scene with springs, a callback or contacts, else
+   NULL/0. */
 MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *state, motus_real dt, void *scratch,
                                   size_t scratch_bytes);
 /* The same over particles [first, first + count) only, for a scene whose forces do not couple particles
@@ -426,6 +449,11 @@ MOTUS_API motus_result motus_scene_check(const motus_scene *scene, int dimension
    inverse mass. report (may be NULL) says which particle, field and component. */
 MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_state *state, int first, int count,
                                          motus_check_report *report);
+/* The pairs of particles that overlap now (distance < the sum of their radii), each once with a < b, in
+   the order the contact solver visits them: *found gets their number, the first `capacity` are written to
+   pairs. scratch as for motus_step with contacts on. The broadphase of the step, for game logic and tests. */
+MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus_state *state, void *scratch,
+                                           size_t scratch_bytes, motus_contact_pair *pairs, int capacity, int *found);
 /* The largest dt the scene's springs and drags allow for its method (Gershgorin bound, see >>methods);
    +Inf when nothing limits it. scratch as for motus_step. */
 MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const motus_state *state,
@@ -1112,7 +1140,8 @@ MOTUS_DEF const char *motus_result_string(motus_result result) {
     return (unsigned)result < MOTUS_RESULT_COUNT ? texts[result] : "unknown motus_result value";
 }
 MOTUS_DEF const char *motus_field_name(motus_field field) {
-    static const char *const names[MOTUS_FIELD_COUNT] = {"none", "position", "velocity", "force", "inverse_mass"};
+    static const char *const names[MOTUS_FIELD_COUNT] = {"none", "position", "velocity", "force", "inverse_mass",
+                                                                  "radius"};
     return (unsigned)field < MOTUS_FIELD_COUNT ? names[field] : NULL;
 }
 MOTUS_DEF void motus__report(motus_check_report *report, int index, motus_field field, int component) {
@@ -1871,6 +1900,7 @@ static int motus__bounds_on(const motus_scene *scene, int dims) {
     return on;
 }
 static int motus__coupled(const motus_scene *scene) { return scene->spring_count > 0 || scene->force_callback; }
+static int motus__radius_valid(motus_real r) { return motus_real_is_finite(r) && r >= 0 && r <= MOTUS__REAL_MAX / 8; }
 
 MOTUS_API motus_result motus_scene_check(const motus_scene *scene, int dimensions, int count,
                                          motus_check_report *report) {
@@ -1958,6 +1988,27 @@ MOTUS_API motus_result motus_scene_check(const motus_scene *scene, int dimension
     if (scene->method == MOTUS_EXACT_LINEAR_DRAG &&
         (scene->quadratic_drag != 0 || scene->attractor_strength != 0 || motus__coupled(scene)))
         return motus__scene_fail(report, MOTUS_ERROR_UNSUPPORTED, "scene.method", -1);
+    {
+        const motus_contacts *c = &scene->contacts;
+        if (!motus_real_is_finite(c->radius))
+            return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.contacts.radius", -1);
+        if (motus__negative(c->radius) || c->radius > MOTUS__REAL_MAX / 8)
+            return motus__scene_fail(report, MOTUS_ERROR_INVALID_CONTACTS, "scene.contacts.radius", -1);
+        if (!motus_real_is_finite(c->restitution))
+            return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.contacts.restitution", -1);
+        if (!motus__fraction_valid(c->restitution))
+            return motus__scene_fail(report, MOTUS_ERROR_INVALID_RESTITUTION, "scene.contacts.restitution", -1);
+        if (!motus_real_is_finite(c->restitution_threshold))
+            return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.contacts.restitution_threshold", -1);
+        if (motus__negative(c->restitution_threshold))
+            return motus__scene_fail(report, MOTUS_ERROR_INVALID_CONTACTS, "scene.contacts.restitution_threshold", -1);
+        if (!motus_real_is_finite(c->friction))
+            return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.contacts.friction", -1);
+        if (motus__negative(c->friction))
+            return motus__scene_fail(report, MOTUS_ERROR_INVALID_CONTACTS, "scene.contacts.friction", -1);
+        if (c->iterations < 0)
+            return motus__scene_fail(report, MOTUS_ERROR_INVALID_CONTACTS, "scene.contacts.iterations", -1);
+    }
     return MOTUS_OK;
 }
 
@@ -1991,12 +2042,13 @@ static motus_result motus__state_shape(const motus_state *state, int *dims, motu
 MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_state *state, int first, int count,
                                          motus_check_report *report) {
     motus_result result;
-    int dims = 2, i, d, forces;
+    int dims = 2, i, d, forces, radii;
     ptrdiff_t stride;
     motus__report(report, -1, MOTUS_FIELD_NONE, -1);
     result = motus__state_shape(state, &dims, report);
     if (result != MOTUS_OK) return result;
-    (void)scene;
+    /* the radii are data only where the scene collides */
+    radii = scene && scene->contacts.enabled && state->radius;
     if (first < 0 || count < 0 || first > state->count || count > state->count - first)
         return motus__scene_fail(report, MOTUS_ERROR_INVALID_COUNT, "first/count", -1);
     stride = state->stride == 0 ? 1 : state->stride;
@@ -2022,25 +2074,53 @@ MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_s
             motus__report(report, i, MOTUS_FIELD_INVERSE_MASS, -1);
             return motus_real_is_finite(state->inverse_mass[at]) ? MOTUS_ERROR_INVALID_MASS : MOTUS_ERROR_NOT_FINITE;
         }
+        if (radii && !motus__radius_valid(state->radius[at])) {
+            motus__report(report, i, MOTUS_FIELD_RADIUS, -1);
+            return motus_real_is_finite(state->radius[at]) ? MOTUS_ERROR_INVALID_CONTACTS : MOTUS_ERROR_NOT_FINITE;
+        }
     }
     return MOTUS_OK;
 }
 
-MOTUS_API size_t motus_scratch_size(const motus_scene *scene, const motus_state *state) {
-    size_t per_particle;
-    int dims;
-    if (!scene || !state || (unsigned)scene->method >= MOTUS_METHOD_COUNT || state->count < 0) return 0;
-    if (!motus__coupled(scene)) return 0;
-    dims = state->dimensions == 3 ? 3 : 2;
-    /* stage positions and velocities, and each evaluation's coupled forces; checked builds also step a copy
-       of the state (positions, velocities, forces, inverse masses) so that an overflow in any substep can
-       leave the state as it was */
-    per_particle = (size_t)dims * (size_t)(2 + motus_method_evaluations(scene->method)) * sizeof(motus_real);
+/* Where each part of the scratch goes, in bytes: the coupled stages, the checked build's copy of the state,
+   the contacts' grid and pair list. 0 if the sizes overflow a size_t. */
+typedef struct motus__layout {
+    size_t coupled, copy, contacts, total;
+    size_t table_size, pair_capacity; /* the contacts' hash table (a power of two) and pair list */
+} motus__layout;
+static int motus__layout_of(const motus_scene *scene, const motus_state *state, motus__layout *l) {
+    const size_t n = (size_t)state->count, real = sizeof(motus_real), index = sizeof(int);
+    const int dims = state->dimensions == 3 ? 3 : 2, contacts = scene->contacts.enabled != 0;
+    size_t per_particle = 0;
+    memset(l, 0, sizeof *l);
+    if (motus__coupled(scene))
+        /* stage positions and velocities, and each evaluation's coupled forces */
+        l->coupled = (size_t)dims * (size_t)(2 + motus_method_evaluations(scene->method)) * real;
 #ifdef MOTUS_CHECKED
-    per_particle += (size_t)(3 * dims + 1) * sizeof(motus_real);
+    /* checked builds step a copy of the state (positions, velocities, forces, inverse masses, radii) so
+       that an overflow in any substep leaves the state as it was */
+    if (motus__coupled(scene) || contacts) l->copy = (size_t)(3 * dims + 1 + contacts) * real;
 #endif
-    if ((size_t)state->count > ((size_t)-1) / per_particle) return (size_t)-1;
-    return per_particle * (size_t)state->count;
+    if (contacts) {
+        /* each particle's cell (dims ints), the particles sorted by bucket (1), the table (2 per particle,
+           a power of two, + 1), and a pair list of 4 (2D) or 8 (3D) pairs per particle (2 ints each) */
+        l->table_size = 1;
+        while (l->table_size < 2 * n && l->table_size < ((size_t)1 << 30)) l->table_size *= 2;
+        l->pair_capacity = (size_t)(dims == 3 ? 8 : 4) * n;
+        l->contacts = ((size_t)dims + 1 + 2 * (dims == 3 ? 8 : 4)) * index;
+    }
+    per_particle = l->coupled + l->copy + l->contacts;
+    if (n > 0 && per_particle > ((size_t)-1 - 4 * index) / 2 / n) return 0;
+    l->coupled *= n, l->copy *= n, l->contacts *= n;
+    if (contacts) l->contacts += (l->table_size + 1) * index;
+    l->total = l->coupled + l->copy + l->contacts;
+    return 1;
+}
+MOTUS_API size_t motus_scratch_size(const motus_scene *scene, const motus_state *state) {
+    motus__layout layout;
+    if (!scene || !state || (unsigned)scene->method >= MOTUS_METHOD_COUNT || state->count < 0) return 0;
+    if (!motus__layout_of(scene, state, &layout)) return (size_t)-1;
+    return layout.total;
 }
 
 /* ---- the step ---- */
@@ -2260,23 +2340,325 @@ MOTUS_API motus_result motus_step_range(const motus_scene *scene, const motus_st
     result = motus__step_checks(scene, state, dt, &dims);
     if (result != MOTUS_OK) return result;
     if (first < 0 || count < 0 || first > state->count || count > state->count - first) return MOTUS_ERROR_INVALID_COUNT;
-    if (motus__coupled(scene)) return MOTUS_ERROR_UNSUPPORTED;
+    if (motus__coupled(scene) || scene->contacts.enabled) return MOTUS_ERROR_UNSUPPORTED;
     if (count == 0) return MOTUS_OK;
     if (dt == 0) return motus_state_check(scene, state, first, count, NULL); /* nothing moves; bad data is reported */
     motus__job_init(&job, scene, state, dims, dt);
     return motus__run(&job, scene, state, dims, first, first + count);
 }
 
-/* The substeps of a coupled scene: for each, a recording pass per stage (the stage state into scratch,
-   then the callback and the springs add that stage's forces), then the pass that stores. */
-static motus_result motus__step_coupled(const motus_scene *scene, const motus_state *state, int dims, motus_real dt,
-                                        motus_real *memory, int evaluations) {
-    const motus__kernel_function kernel = motus__kernel_for(scene->method, dims, 0, 1);
-    const int count = state->count;
+/* ---- contacts (see >>contacts) ---- */
+typedef struct motus__contact_job {
+    int dims, count, iterations, walls, grid, listed;
+    ptrdiff_t stride;
+    motus_real *x[3], *v[3];
+    const motus_real *inverse_mass, *radius;
+    motus_real uniform_inverse_mass, uniform_radius;
+    motus_real restitution, wall_restitution, threshold, friction;
+    motus_real lo[3], hi[3];
+    motus_real inverse_cell, scale, inverse_scale; /* cell = 1/inverse_cell; scale: a power of two, radii ~ 1 */
+    int *cell[3], *sorted, *table;
+    unsigned mask;
+    motus_contact_pair *pairs;
+    size_t pair_capacity, pair_count;
+} motus__contact_job;
+enum { MOTUS__PAIRS_RECORD, MOTUS__PAIRS_VELOCITY, MOTUS__PAIRS_POSITION };
+
+static motus_real motus__contact_w(const motus__contact_job *j, int i) {
+    return j->inverse_mass ? j->inverse_mass[(ptrdiff_t)i * j->stride] : j->uniform_inverse_mass;
+}
+static motus_real motus__contact_r(const motus__contact_job *j, int i) {
+    return j->radius ? j->radius[(ptrdiff_t)i * j->stride] : j->uniform_radius;
+}
+/* A bucket of the hash table for a cell (the cells are unbounded: no world box). */
+static unsigned motus__cell_hash(int x, int y, int z, unsigned mask) {
+    unsigned h = (unsigned)x * 73856093u ^ (unsigned)y * 19349663u ^ (unsigned)z * 83492791u;
+    h ^= h >> 16;
+    h *= 0x7feb352du;
+    h ^= h >> 15;
+    return h & mask;
+}
+static int motus__floor_int(motus_real q) {
+    int t = (int)q;
+    return (motus_real)t > q ? t - 1 : t;
+}
+
+/* The job of a contact pass over the state, and the grid of its positions: cells of 2.125 times the largest
+   radius (so that touching particles are in the same or neighbouring cells, with room for rounding), at
+   least 2^-28 of the largest coordinate (so that a cell number fits an int and a quotient's rounding never
+   skips a cell); the particles counting-sorted by bucket into the scratch, in index order within one. */
+static void motus__contact_job_init(motus__contact_job *j, const motus_scene *scene, const motus_state *state,
+                                    int dims, motus_real h, void *memory, const motus__layout *l) {
+    const motus_contacts *c = &scene->contacts;
+    const motus_real lo[3] = {scene->bounds_min.x, scene->bounds_min.y, scene->bounds_min.z};
+    const motus_real hi[3] = {scene->bounds_max.x, scene->bounds_max.y, scene->bounds_max.z};
+    const motus_real g[3] = {scene->gravity.x, scene->gravity.y, scene->gravity.z};
+    motus_real largest_radius = 0, largest_coordinate = 0, cell, g_max = 0, g_sum = 0;
+    int *ints = (int *)((char *)memory + l->coupled + l->copy);
+    int i, d, count = state->count;
+    memset(j, 0, sizeof *j);
+    j->dims = dims;
+    j->count = count;
+    j->stride = state->stride == 0 ? 1 : state->stride;
+    for (d = 0; d < dims; ++d) {
+        j->x[d] = state->position[d];
+        j->v[d] = state->velocity[d];
+        j->lo[d] = lo[d];
+        j->hi[d] = hi[d];
+    }
+    j->inverse_mass = state->inverse_mass;
+    j->radius = state->radius;
+    j->uniform_inverse_mass = scene->mass > 0 ? MOTUS_R(1.0) / scene->mass : MOTUS_R(1.0);
+    j->uniform_radius = c->radius;
+    j->restitution = c->restitution;
+    j->wall_restitution = scene->restitution;
+    j->friction = c->friction;
+    j->iterations = c->iterations > 0 ? c->iterations : 4;
+    j->walls = motus__bounds_on(scene, dims);
+    /* |g| without squaring g (it may be near the largest real) */
+    for (d = 0; d < dims; ++d) g_max = (g[d] < 0 ? -g[d] : g[d]) > g_max ? (g[d] < 0 ? -g[d] : g[d]) : g_max;
+    for (d = 0; d < dims && g_max > 0; ++d) g_sum += (g[d] / g_max) * (g[d] / g_max);
+    j->threshold = c->restitution_threshold > 0 ? c->restitution_threshold : 4 * (g_max * MOTUS_SQRT(g_sum)) * h;
+    /* the grid */
+    for (i = 0; i < count; ++i) {
+        const motus_real r = motus__contact_r(j, i);
+        if (r > largest_radius) largest_radius = r;
+        for (d = 0; d < dims; ++d) {
+            const motus_real x = j->x[d][(ptrdiff_t)i * j->stride], m = x < 0 ? -x : x;
+            if (m > largest_coordinate) largest_coordinate = m;
+        }
+    }
+    j->grid = largest_radius > 0 && count > 1;
+    if (!j->grid) return;
+    cell = largest_radius * MOTUS_R(2.125);
+    if (largest_coordinate / (motus_real)(1 << 28) > cell) cell = largest_coordinate / (motus_real)(1 << 28);
+    if (cell < 4 / (motus_real)MOTUS__REAL_MAX) cell = 4 / (motus_real)MOTUS__REAL_MAX;
+    j->inverse_cell = 1 / cell;
+    /* distances in units where the largest pair of radii is about 1: neither their squares nor those of
+       the gaps between touching particles overflow or underflow (a power of two: exact) */
+    j->scale = 1;
+    while (j->scale * largest_radius > 2 && j->scale > 4 / (motus_real)MOTUS__REAL_MAX) j->scale *= MOTUS_R(0.5);
+    while (j->scale * largest_radius < MOTUS_R(0.25) && j->scale < (motus_real)MOTUS__REAL_MAX / 4) j->scale *= 2;
+    j->inverse_scale = 1 / j->scale;
+    for (d = 0; d < 3; ++d) j->cell[d] = NULL;
+    for (d = 0; d < dims; ++d) j->cell[d] = ints, ints += count;
+    j->sorted = ints, ints += count;
+    j->table = ints, ints += l->table_size + 1;
+    j->pairs = (motus_contact_pair *)(void *)ints;
+    j->pair_capacity = l->pair_capacity;
+    j->mask = (unsigned)(l->table_size - 1);
+    for (i = 0; i <= (int)l->table_size; ++i) j->table[i] = 0;
+    for (i = 0; i < count; ++i) {
+        int k[3] = {0, 0, 0};
+        for (d = 0; d < dims; ++d) k[d] = j->cell[d][i] = motus__floor_int(j->x[d][(ptrdiff_t)i * j->stride] * j->inverse_cell);
+        ++j->table[motus__cell_hash(k[0], k[1], k[2], j->mask) + 1];
+    }
+    for (i = 0; i < (int)l->table_size; ++i) j->table[i + 1] += j->table[i];
+    /* scatter in index order; table[b] then runs one bucket ahead, and is shifted back after */
+    for (i = 0; i < count; ++i) {
+        const unsigned b = motus__cell_hash(j->cell[0][i], j->cell[1][i], dims == 3 ? j->cell[2][i] : 0, j->mask);
+        j->sorted[j->table[b]++] = i;
+    }
+    for (i = (int)l->table_size; i > 0; --i) j->table[i] = j->table[i - 1];
+    j->table[0] = 0;
+}
+
+/* Do a and b overlap (distance < the sum of their radii)? If so, the unit normal from a to b and the depth
+   (m). Coincident centres get the normal +x. */
+static int motus__overlap(const motus__contact_job *j, int a, int b, motus_real *normal, motus_real *depth) {
+    const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
+    const motus_real sum = (motus__contact_r(j, a) + motus__contact_r(j, b)) * j->scale;
+    motus_real u[3] = {0, 0, 0}, d2 = 0, distance;
+    int d;
+    for (d = 0; d < j->dims; ++d) {
+        u[d] = (j->x[d][pb] - j->x[d][pa]) * j->scale; /* Inf when far apart: no contact */
+        d2 += u[d] * u[d];
+    }
+    if (!(d2 < sum * sum)) return 0;
+    distance = MOTUS_SQRT(d2);
+    for (d = 0; d < j->dims; ++d) normal[d] = distance > 0 ? u[d] / distance : (motus_real)(d == 0);
+    *depth = (sum - distance) * j->inverse_scale;
+    return 1;
+}
+
+/* One contact's velocity: the normal impulse that turns the approach speed vn < 0 into -e*vn (0 below the
+   threshold), mass-weighted, then Coulomb friction up to friction times that impulse, never past a
+   tangential stop. Applied to the current velocities (Gauss-Seidel), so a chain (Newton's cradle) passes
+   the momentum through in one sweep. Equal and opposite: momentum is kept to rounding; with e <= 1 the
+   kinetic energy does not grow. */
+static void motus__pair_velocity(motus__contact_job *j, int a, int b, const motus_real *n) {
+    const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
+    const motus_real wa = motus__contact_w(j, a), wb = motus__contact_w(j, b), w = wa + wb;
+    motus_real vn = 0, target, impulse, t[3] = {0, 0, 0}, t2 = 0, tangential, friction;
+    int d;
+    if (w == 0) return; /* two immovable particles */
+    for (d = 0; d < j->dims; ++d) vn += (j->v[d][pb] - j->v[d][pa]) * n[d];
+    if (!(vn < 0)) return; /* separating or resting */
+    target = vn < -j->threshold ? -j->restitution * vn : 0;
+    impulse = (target - vn) / w;
+    for (d = 0; d < j->dims; ++d) {
+        j->v[d][pa] -= impulse * wa * n[d];
+        j->v[d][pb] += impulse * wb * n[d];
+    }
+    if (j->friction == 0) return;
+    /* the tangential part of the relative velocity: r - (r.n)n, with r.n summed over the components */
+    {
+        motus_real rn = 0;
+        for (d = 0; d < j->dims; ++d) rn += (j->v[d][pb] - j->v[d][pa]) * n[d];
+        for (d = 0; d < j->dims; ++d) t[d] = (j->v[d][pb] - j->v[d][pa]) - rn * n[d], t2 += t[d] * t[d];
+    }
+    tangential = MOTUS_SQRT(t2);
+    if (!(tangential > 0)) return;
+    friction = tangential / w; /* the impulse that stops the sliding */
+    if (friction > j->friction * impulse) friction = j->friction * impulse;
+    for (d = 0; d < j->dims; ++d) {
+        const motus_real direction = t[d] / tangential;
+        j->v[d][pa] += friction * wa * direction;
+        j->v[d][pb] -= friction * wb * direction;
+    }
+}
+/* One contact's position: each pushed out along the normal by its share (inverse mass) of the depth. A
+   projection, not a velocity (split impulse): it removes the overlap without adding energy. */
+static void motus__pair_position(motus__contact_job *j, int a, int b, const motus_real *n, motus_real depth) {
+    const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
+    const motus_real wa = motus__contact_w(j, a), wb = motus__contact_w(j, b), w = wa + wb;
+    int d;
+    if (w == 0) return;
+    for (d = 0; d < j->dims; ++d) {
+        j->x[d][pa] -= depth * (wa / w) * n[d];
+        j->x[d][pb] += depth * (wb / w) * n[d];
+    }
+}
+/* The walls of the bounds as contacts at the particle's radius: the same impulse, threshold and friction
+   as between particles (the wall immovable), and the same projection. Walls act on immovable particles
+   too, as the bounds do without contacts. */
+static void motus__wall_contacts(motus__contact_job *j, int i, int action) {
+    const ptrdiff_t p = (ptrdiff_t)i * j->stride;
+    const motus_real r = motus__contact_r(j, i);
+    int d, e;
+    for (d = 0; d < j->dims; ++d) {
+        motus_real *x = &j->x[d][p], *v = &j->v[d][p], low = j->lo[d] + r, high = j->hi[d] - r;
+        if (!(low <= (motus_real)MOTUS__REAL_MAX)) low = (motus_real)MOTUS__REAL_MAX;
+        if (!(high >= -(motus_real)MOTUS__REAL_MAX)) high = -(motus_real)MOTUS__REAL_MAX;
+        if (low > high) low = high = j->lo[d] * MOTUS_R(0.5) + j->hi[d] * MOTUS_R(0.5); /* narrower than the ball */
+        if (action == MOTUS__PAIRS_POSITION) {
+            if (*x < low) *x = low;
+            if (*x > high) *x = high;
+            continue;
+        }
+        for (e = -1; e <= 1; e += 2) {
+            /* e = -1: the low wall (normal +d), e = +1: the high wall (normal -d) */
+            const motus_real vn = e < 0 ? *v : -*v; /* along the wall's normal */
+            motus_real target, change, t2 = 0, tangential, keep;
+            int k;
+            if (!(e < 0 ? *x < low : *x > high) || !(vn < 0)) continue;
+            target = vn < -j->threshold ? -j->wall_restitution * vn : 0;
+            change = target - vn;
+            *v = e < 0 ? target : -target;
+            if (j->friction == 0) continue;
+            for (k = 0; k < j->dims; ++k)
+                if (k != d) t2 += j->v[k][p] * j->v[k][p];
+            tangential = MOTUS_SQRT(t2);
+            if (!(tangential > 0)) continue;
+            keep = tangential > j->friction * change ? 1 - j->friction * change / tangential : 0;
+            for (k = 0; k < j->dims; ++k)
+                if (k != d) j->v[k][p] *= keep;
+        }
+    }
+}
+
+/* Particle i's contacts with the particles after it: the neighbouring cells' buckets (each once: two cells
+   may share one), the particles there within one cell of i in every axis, those that overlap. Records them
+   (up to room) or solves them; returns how many there were. */
+static size_t motus__pairs_of(motus__contact_job *j, int i, int action, motus_contact_pair *out, size_t room) {
+    unsigned visited[27];
+    int seen = 0, k, s, c[3] = {0, 0, 0}, o[3];
+    size_t found = 0;
+    motus_real n[3], depth;
+    for (k = 0; k < j->dims; ++k) c[k] = j->cell[k][i];
+    for (o[2] = j->dims == 3 ? -1 : 0; o[2] <= (j->dims == 3 ? 1 : 0); ++o[2])
+        for (o[1] = -1; o[1] <= 1; ++o[1])
+            for (o[0] = -1; o[0] <= 1; ++o[0]) {
+                const unsigned b = motus__cell_hash(c[0] + o[0], c[1] + o[1], c[2] + o[2], j->mask);
+                int other, end, near;
+                for (s = 0; s < seen && visited[s] != b; ++s) continue;
+                if (s < seen) continue;
+                visited[seen++] = b;
+                for (other = j->table[b], end = j->table[b + 1]; other < end; ++other) {
+                    const int q = j->sorted[other];
+                    if (q <= i) continue;
+                    for (near = 1, k = 0; k < j->dims; ++k) {
+                        const int gap = j->cell[k][q] - c[k];
+                        near &= gap >= -1 && gap <= 1;
+                    }
+                    if (!near || !motus__overlap(j, i, q, n, &depth)) continue;
+                    if (action == MOTUS__PAIRS_RECORD) {
+                        if (found < room) out[found].a = i, out[found].b = q;
+                    } else if (action == MOTUS__PAIRS_VELOCITY) {
+                        motus__pair_velocity(j, i, q, n);
+                    } else {
+                        motus__pair_position(j, i, q, n, depth);
+                    }
+                    ++found;
+                }
+            }
+    return found;
+}
+
+/* One contact pass after a substep of h: the pairs recorded (as many particles' worth as the list holds;
+   the rest are searched again at each sweep, in the same order), then `iterations` sweeps of velocity
+   impulses over the pairs and walls, then as many of position projection. */
+static motus_result motus__contacts_pass(const motus_scene *scene, const motus_state *state, int dims, motus_real h,
+                                         void *memory, const motus__layout *l) {
+    motus__contact_job job, *j = &job;
+    int i, d, sweep, phase;
+    size_t k;
+    motus__contact_job_init(j, scene, state, dims, h, memory, l);
+    j->listed = 0;
+    if (j->grid) {
+        for (i = 0; i < j->count; ++i) {
+            const size_t room = j->pair_capacity - j->pair_count;
+            const size_t found = motus__pairs_of(j, i, MOTUS__PAIRS_RECORD, j->pairs + j->pair_count, room);
+            if (found > room) break; /* this particle's pairs and the rest: searched at every sweep */
+            j->pair_count += found;
+            j->listed = i + 1;
+        }
+    }
+    for (phase = MOTUS__PAIRS_VELOCITY; phase <= MOTUS__PAIRS_POSITION; ++phase)
+        for (sweep = 0; sweep < j->iterations; ++sweep) {
+            for (k = 0; k < j->pair_count; ++k) {
+                motus_real n[3], depth;
+                const int a = j->pairs[k].a, b = j->pairs[k].b;
+                if (!motus__overlap(j, a, b, n, &depth)) continue;
+                if (phase == MOTUS__PAIRS_VELOCITY) motus__pair_velocity(j, a, b, n);
+                else motus__pair_position(j, a, b, n, depth);
+            }
+            for (i = j->listed; j->grid && i < j->count; ++i) (void)motus__pairs_of(j, i, phase, NULL, 0);
+            for (i = 0; j->walls && i < j->count; ++i) motus__wall_contacts(j, i, phase);
+        }
+    for (i = 0; i < j->count; ++i)
+        for (d = 0; d < dims; ++d)
+            if (!motus_real_is_finite(j->x[d][(ptrdiff_t)i * j->stride]) ||
+                !motus_real_is_finite(j->v[d][(ptrdiff_t)i * j->stride]))
+                return MOTUS_ERROR_NOT_FINITE;
+    return MOTUS_OK;
+}
+
+/* The substeps one at a time, for a scene with springs, a callback or contacts: for each, where coupled, a
+   recording pass per stage (the stage state into scratch, then the callback and the springs add that
+   stage's forces); the pass that stores; then, with contacts, the contact pass. */
+static motus_result motus__step_substeps(const motus_scene *scene, const motus_state *state, int dims, motus_real dt,
+                                         motus_real *memory, const motus__layout *layout) {
+    const int count = state->count, coupled = motus__coupled(scene), contacts = scene->contacts.enabled != 0;
+    const int evaluations = motus_method_evaluations(scene->method);
+    motus__kernel_function kernel;
     motus__job job;
     int d, stage, substep, substeps;
     motus__job_init(&job, scene, state, dims, dt);
-    for (d = 0; d < dims; ++d) {
+    if (contacts) job.terms &= ~(unsigned)MOTUS__T_BOUNDS; /* the walls are contacts */
+    kernel = motus__kernel_for(scene->method, dims, coupled ? 0 : job.terms,
+                               coupled || job.stride != 1 || count < MOTUS__LANES);
+    for (d = 0; d < dims && coupled; ++d) {
         job.stage_x[d] = memory + (size_t)d * (size_t)count;
         job.stage_v[d] = memory + (size_t)(dims + d) * (size_t)count;
         for (stage = 0; stage < evaluations; ++stage)
@@ -2286,7 +2668,7 @@ static motus_result motus__step_coupled(const motus_scene *scene, const motus_st
     job.substeps = 1;
     for (substep = 0; substep < substeps; ++substep) {
         const motus_real h = job.substep_dt;
-        for (stage = 0; stage < evaluations; ++stage) {
+        for (stage = 0; stage < evaluations && coupled; ++stage) {
             job.record_stage = stage;
             (void)kernel(&job, 0, count);
             motus__stage_forces(&job, scene, dims, count, stage, motus__stage_time(scene->method, stage) * h);
@@ -2294,43 +2676,60 @@ static motus_result motus__step_coupled(const motus_scene *scene, const motus_st
         job.record_stage = -1;
         job.apply_damping = substep == substeps - 1;
         if (kernel(&job, 0, count)) return MOTUS_ERROR_NOT_FINITE;
+        if (contacts) {
+            const motus_result result = motus__contacts_pass(scene, state, dims, h, memory, layout);
+            if (result != MOTUS_OK) return result;
+        }
     }
+    return MOTUS_OK;
+}
+
+/* The radii, before anything is written (a contact pass reads them at every substep). */
+static motus_result motus__radii_check(const motus_scene *scene, const motus_state *state) {
+    const ptrdiff_t stride = state->stride == 0 ? 1 : state->stride;
+    int i;
+    for (i = 0; i < state->count && state->radius; ++i) {
+        const motus_real r = state->radius[(ptrdiff_t)i * stride];
+        if (!motus__radius_valid(r)) return motus_real_is_finite(r) ? MOTUS_ERROR_INVALID_CONTACTS : MOTUS_ERROR_NOT_FINITE;
+    }
+    (void)scene;
     return MOTUS_OK;
 }
 
 MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *state, motus_real dt, void *scratch,
                                   size_t scratch_bytes) {
     motus__job job;
+    motus__layout layout;
     motus_result result;
     motus_real *memory = (motus_real *)scratch;
-    int dims = 2, evaluations, count;
-#ifdef MOTUS_CHECKED
-    int d;
-#endif
+    int dims = 2, count;
     result = motus__step_checks(scene, state, dt, &dims);
     if (result != MOTUS_OK) return result;
     count = state->count;
-    if (!motus__coupled(scene)) {
+    if (!motus__coupled(scene) && !scene->contacts.enabled) {
         if (count == 0) return MOTUS_OK;
         if (dt == 0) return motus_state_check(scene, state, 0, count, NULL); /* nothing moves; bad data is reported */
         motus__job_init(&job, scene, state, dims, dt);
         return motus__run(&job, scene, state, dims, 0, count);
     }
-    /* Coupled: every stage a pass over caller memory (see COUPLING in >>methods). */
-    if (scratch_bytes < motus_scratch_size(scene, state) || (!scratch && count > 0) ||
+    /* Coupled or colliding: substep by substep over caller memory (see COUPLING in >>methods, >>contacts). */
+    if (!motus__layout_of(scene, state, &layout) || scratch_bytes < layout.total || (!scratch && count > 0) ||
         (uintptr_t)scratch % offsetof(motus__align_probe, r) != 0)
         return MOTUS_ERROR_SCRATCH_TOO_SMALL;
     if (count == 0) return MOTUS_OK;
+    if (scene->contacts.enabled) {
+        result = motus__radii_check(scene, state);
+        if (result != MOTUS_OK) return result;
+    }
     if (dt == 0) return motus_state_check(scene, state, 0, count, NULL);
-    evaluations = motus_method_evaluations(scene->method);
 #ifdef MOTUS_CHECKED
     {
         /* Checked: the data first, then every substep on a copy in scratch, written back only if it all
            came out finite, so that an overflow leaves the state as it was. */
         motus_state copy = *state;
         const ptrdiff_t stride = state->stride == 0 ? 1 : state->stride;
-        motus_real *next = memory + (size_t)(2 + evaluations) * (size_t)dims * (size_t)count;
-        int i;
+        motus_real *next = (motus_real *)(void *)((char *)scratch + layout.coupled);
+        int i, d;
         result = motus_state_check(scene, state, 0, count, NULL);
         if (result != MOTUS_OK) return result;
         copy.stride = 1;
@@ -2348,7 +2747,12 @@ MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *s
             for (i = 0; i < count; ++i) next[i] = state->inverse_mass[(ptrdiff_t)i * stride];
             copy.inverse_mass = next;
         }
-        result = motus__step_coupled(scene, &copy, dims, dt, memory, evaluations);
+        next += count;
+        if (state->radius && scene->contacts.enabled) {
+            for (i = 0; i < count; ++i) next[i] = state->radius[(ptrdiff_t)i * stride];
+            copy.radius = next;
+        }
+        result = motus__step_substeps(scene, &copy, dims, dt, memory, &layout);
         if (result != MOTUS_OK) return MOTUS_ERROR_OVERFLOW; /* the data was checked: only an overflow is left */
         for (d = 0; d < dims; ++d)
             for (i = 0; i < count; ++i) {
@@ -2358,8 +2762,42 @@ MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *s
         return MOTUS_OK;
     }
 #else
-    return motus__step_coupled(scene, state, dims, dt, memory, evaluations);
+    return motus__step_substeps(scene, state, dims, dt, memory, &layout);
 #endif
+}
+
+/* The broadphase alone, on the positions as they are. */
+MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus_state *state, void *scratch,
+                                           size_t scratch_bytes, motus_contact_pair *pairs, int capacity, int *found) {
+    motus__layout layout;
+    motus__contact_job job;
+    motus_result result;
+    size_t total = 0;
+    int dims = 2, i;
+    if (!found || (capacity > 0 && !pairs)) return MOTUS_ERROR_NULL_POINTER;
+    if (capacity < 0) return MOTUS_ERROR_INVALID_COUNT;
+    result = motus__step_checks(scene, state, 0, &dims);
+    if (result != MOTUS_OK) return result;
+    {
+        motus_scene colliding = *scene; /* the layout of a scene with contacts on, whatever this one says */
+        colliding.contacts.enabled = 1;
+        if (!motus__layout_of(&colliding, state, &layout) || scratch_bytes < layout.total ||
+            (!scratch && state->count > 0) || (uintptr_t)scratch % offsetof(motus__align_probe, r) != 0)
+            return MOTUS_ERROR_SCRATCH_TOO_SMALL;
+        result = motus__radii_check(&colliding, state);
+        if (result != MOTUS_OK) return result;
+        colliding.contacts.enabled = 1;
+        result = motus_state_check(&colliding, state, 0, state->count, NULL);
+        if (result != MOTUS_OK) return result;
+        motus__contact_job_init(&job, &colliding, state, dims, 0, scratch, &layout);
+    }
+    for (i = 0; job.grid && i < state->count; ++i) {
+        const size_t room = total < (size_t)capacity ? (size_t)capacity - total : 0;
+        total += motus__pairs_of(&job, i, MOTUS__PAIRS_RECORD, room > 0 ? pairs + total : NULL, room);
+        if (total > (size_t)INT_MAX) return MOTUS_ERROR_INVALID_COUNT;
+    }
+    *found = (int)total;
+    return MOTUS_OK;
 }
 
 MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const motus_state *state,
