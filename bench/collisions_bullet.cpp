@@ -99,7 +99,18 @@ void bullet_read(void *world, double *x[3], double *v[3]) {
     }
 }
 
-void bullet_destroy(void *world) { delete (bullet_world *)world; }
+// The pairs first, one by one from the end (hashed: O(1) each): ~btCollisionWorld then frees each body's
+// proxy, which scans every remaining pair; with the pairs still there that is O(N * pairs), minutes at 10^5.
+void bullet_destroy(void *world) {
+    bullet_world *w = (bullet_world *)world;
+    btOverlappingPairCache *cache = w->world.getPairCache();
+    btBroadphasePairArray &pairs = cache->getOverlappingPairArray();
+    while (pairs.size() > 0) {
+        btBroadphasePair &last = pairs[pairs.size() - 1];
+        cache->removeOverlappingPair(last.m_pProxy0, last.m_pProxy1, &w->dispatcher);
+    }
+    delete w;
+}
 
 const char *bullet_describe() {
     static char text[200];
