@@ -8,6 +8,7 @@
    >>types           motus_vec2/3, motus_particle/3, motus_result, motus_method, motus_scene, motus_state
    >>declarations    every function motus has, in one list
    >>methods         the nine integrators: order, cost, stability, what they do with velocity forces
+   >>contacts        collisions and resting contacts: the broadphase, the solver, what it costs and keeps
    >>determinism     what is bit-for-bit reproducible, and under which conditions
    >>inline          the small functions, defined in every unit (vectors, particles, clock, messages)
    >>implementation  the engine (kernels, checks, stability), compiled where MOTUS_IMPLEMENTATION is defined
@@ -41,8 +42,18 @@
        motus_result r = motus_step(&scene, &state, dt, NULL, 0);
        if (r != MOTUS_OK) fprintf(stderr, "motus: %s\n", motus_result_string(r));
 
-   Forces that couple particles (springs, a callback) need working memory: motus_scratch_size() bytes,
-   yours, passed to motus_step. motus allocates nothing and keeps no global state.
+   Forces that couple particles (springs, a callback) and collisions need working memory:
+   motus_scratch_size() bytes, yours, passed to motus_step. motus allocates nothing and keeps no global
+   state. Balls that collide and pile up on the floor of a box (see >>contacts):
+
+       scene.contacts.enabled = 1;
+       scene.contacts.radius = 8;                      // or state.radius: one per particle
+       scene.contacts.friction = 0.3f;
+       scene.bounds_min = motus_v3(0, 0, 0);           // the walls they rest against
+       scene.bounds_max = motus_v3(800, 600, 0);
+       size_t bytes = motus_scratch_size(&scene, &state);
+       void *scratch = malloc(bytes);                  // once, not every frame
+       motus_step(&scene, &state, dt, scratch, bytes);
 
    >>conventions
    =============
@@ -58,9 +69,12 @@
      it velocity 0 for a fixed anchor or obstacle.
    - Forces accumulate until you clear them. The step does not clear them: a constant force may be added once.
    - Every function that can be handed bad input returns a motus_result; on any result other than MOTUS_OK
-     nothing was written (see >>checks for the one documented exception). dt == 0 is a valid step of
-     nothing (NaN or Inf in the state is still reported); a count of 0 is valid and does nothing. motus_result_string() turns a result into a sentence,
-     motus_scene_check() names the scene field at fault, motus_state_check() the particle and field.
+     nothing was written, with one exception: without MOTUS_CHECKED (>>config), motus_step on particle
+     data that is NaN or Inf, or that overflows, has written the step when it returns MOTUS_ERROR_NOT_FINITE
+     (it finds out while it writes, to stay a single pass). dt == 0 is a valid step of
+     nothing (NaN or Inf in the state is still reported); a count of 0 is valid and does nothing.
+     motus_result_string() turns a result into a sentence, motus_scene_check() names the scene field at
+     fault, motus_state_check() the particle and field.
    - Zero means default in every description: a zeroed motus_scene is a valid scene with no forces.
    - No compound literals in the header, so it also compiles as C++.
 
@@ -80,6 +94,8 @@
    - MOTUS_REST_SPEED      (1e-30f; 1e-300 with MOTUS_DOUBLE)  m/s: damping sets a velocity component below
                                          this to zero (subnormals are slow on many x86 cores). 0: no flush.
    - MOTUS_CLOCK_DEFAULT_MAX_STEPS (8)   steps a motus_clock runs per frame when given 0.
+   - MOTUS_CONTACT_SUPPORT_SWEEPS (1)    0: contacts without the support sweeps (plain Gauss-Seidel; for
+                                         comparison, see >>contacts: deep piles then need many iterations).
    - MOTUS_ALLOW_FP_CONTRACT (undefined) leave a*b + c contraction to your compiler flags (see >>determinism).
    - MOTUS_ALLOW_FAST_MATH (undefined)   silence the message printed under -ffast-math.
 */
@@ -512,6 +528,42 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
    scratch, then the callback and the springs add the stage's forces, then the next stage; the last pass
    stores the result. The same code runs both ways, so a scene gives the same bits with or without a
    callback that adds nothing.
+
+   >>contacts
+   ==========
+   With scene.contacts.enabled each particle is a disc (2D) or a ball (3D) of its radius (state.radius, or
+   contacts.radius for all), and every substep is the method, then a contact pass:
+   - Broadphase: a spatial hash of cells 2.25 times the largest radius (no world box; the cells grow to
+     2^-28 of the largest coordinate so that a cell number fits an int and rounding never skips a cell),
+     the particles counting-sorted by bucket into scratch (O(N), no allocation); each particle looks in the
+     3^d cells around its own. The pairs nearer than 1.1 times the sum of their radii are listed in scratch
+     (4 per particle in 2D, 8 in 3D; past that, the rest are searched again at each sweep, same order).
+   - Solver: sequential impulses (projected Gauss-Seidel: Catto, "Iterative Dynamics with Temporal
+     Coherence", GDC 2005; Box2D) over `iterations` sweeps of velocities: a pair within 1% of touching
+     that approaches at vn < 0 gets the mass-weighted impulse that leaves -restitution*vn, or 0 below the
+     restitution threshold (Box2D's rule, so that what rests does not hop); then Coulomb friction up to
+     friction times that impulse. Then as many sweeps of positions: each overlap removed along the normal
+     by inverse-mass shares, without touching velocities (split impulse / Box2D v2's non-linear
+     Gauss-Seidel position pass: the overlap goes without adding energy). The walls of the bounds are
+     contacts with an immovable plane at the particle's radius, same rules.
+   - Piles: pairs are visited from the bottom up (a counting sort on height against gravity), and each
+     phase ends with a support sweep (shock propagation: Guendelman, Bridson and Fedkiw, "Nonconvex rigid
+     bodies with stacking", SIGGRAPH 2003): a particle resting on a wall, an immovable particle, or one
+     resting on those counts as immovable for the particle above it (within 60 degrees of up). One sweep
+     then carries a pile's whole weight, where plain Gauss-Seidel needs about as many sweeps as the pile
+     has rows: a 2,000-ball pile settles to overlaps of 5e-5 r (tests/contacts.c). Why not Box2D v3's soft
+     step (Catto's Solver2D comparison ranks it best for rigid bodies): it relies on warm starting, i.e.
+     contact impulses kept from the last step, and motus keeps no state between calls.
+   - What it keeps: every impulse is equal and opposite (momentum kept to rounding) except where a wall or
+     an immovable particle takes it; with restitution <= 1 the kinetic energy never grows (a sweep's
+     impulse brings one pair's approach to -e times itself, friction never reverses sliding, positions move
+     without velocity). So contacts do not lower any method's stable dt. A contact is resolved at the end
+     of the substep in which it begins: across a collision every method is first order in time (between
+     collisions each keeps its order). A particle that moves more than its radius in a substep can pass
+     through a thin one: keep |v|*h below the radius (substeps).
+   - Deterministic: the order depends on the data only (heights, indices). Contacts run on the calling
+     thread inside motus_step (motus_step_range refuses a scene with contacts). Cost per substep:
+     O(N + pairs * iterations); motus_find_contacts gives the overlapping pairs for game logic.
 
    >>determinism
    =============
@@ -2102,17 +2154,20 @@ static int motus__layout_of(const motus_scene *scene, const motus_state *state, 
     if (motus__coupled(scene) || contacts) l->copy = (size_t)(3 * dims + 1 + contacts) * real;
 #endif
     if (contacts) {
-        /* each particle's cell (dims ints), the particles sorted by bucket (1), the table (2 per particle,
-           a power of two, + 1), and a pair list of 4 (2D) or 8 (3D) pairs per particle (2 ints each) */
+        /* a pair list of 4 (2D) or 8 (3D) pairs per particle (2 ints, and the normal and depth: 4 reals);
+           each particle's cell (dims ints), the particles sorted by bucket (1), by height (1) and their rank
+           in that order (1), whether it is supported (1), the particles near a wall (1); the table and the
+           height bins (each 2 per particle, a power of two, + 1) */
+        const size_t pairs = dims == 3 ? 8 : 4;
         l->table_size = 1;
         while (l->table_size < 2 * n && l->table_size < ((size_t)1 << 30)) l->table_size *= 2;
-        l->pair_capacity = (size_t)(dims == 3 ? 8 : 4) * n;
-        l->contacts = ((size_t)dims + 1 + 2 * (dims == 3 ? 8 : 4)) * index;
+        l->pair_capacity = pairs * n;
+        l->contacts = pairs * 4 * real + ((size_t)dims + 5 + 2 * pairs) * index;
     }
     per_particle = l->coupled + l->copy + l->contacts;
     if (n > 0 && per_particle > ((size_t)-1 - 4 * index) / 2 / n) return 0;
     l->coupled *= n, l->copy *= n, l->contacts *= n;
-    if (contacts) l->contacts += (l->table_size + 1) * index;
+    if (contacts) l->contacts += 2 * (l->table_size + 1) * index;
     l->total = l->coupled + l->copy + l->contacts;
     return 1;
 }
@@ -2348,6 +2403,9 @@ MOTUS_API motus_result motus_step_range(const motus_scene *scene, const motus_st
 }
 
 /* ---- contacts (see >>contacts) ---- */
+#ifndef MOTUS_CONTACT_SUPPORT_SWEEPS
+#define MOTUS_CONTACT_SUPPORT_SWEEPS 1
+#endif
 typedef struct motus__contact_job {
     int dims, count, iterations, walls, grid, listed;
     ptrdiff_t stride;
@@ -2357,12 +2415,19 @@ typedef struct motus__contact_job {
     motus_real restitution, wall_restitution, threshold, friction;
     motus_real lo[3], hi[3];
     motus_real inverse_cell, scale, inverse_scale; /* cell = 1/inverse_cell; scale: a power of two, radii ~ 1 */
-    int *cell[3], *sorted, *table;
+    int *cell[3], *sorted, *table, *order, *rank, *supported, *near_wall, near_walls, shock, up_axis;
+    motus_real *geometry, *geometry_out; /* per listed pair: the normal and the depth when it was listed */
+    motus_real up_sign;
     unsigned mask;
     motus_contact_pair *pairs;
     size_t pair_capacity, pair_count;
 } motus__contact_job;
 enum { MOTUS__PAIRS_RECORD, MOTUS__PAIRS_VELOCITY, MOTUS__PAIRS_POSITION };
+/* The solver keeps the pairs nearer than MOTUS__REACH times their radii's sum: a pile whose balls touch
+   after one projection (a gap of a rounding) stays in the list, so a push travels up a column within a
+   pass. Impulses act within MOTUS__TOUCH (of the radii's sum) of touching; projections on overlaps only. */
+#define MOTUS__REACH MOTUS_R(1.1)
+#define MOTUS__TOUCH MOTUS_R(0.01)
 
 static motus_real motus__contact_w(const motus__contact_job *j, int i) {
     return j->inverse_mass ? j->inverse_mass[(ptrdiff_t)i * j->stride] : j->uniform_inverse_mass;
@@ -2383,7 +2448,7 @@ static int motus__floor_int(motus_real q) {
     return (motus_real)t > q ? t - 1 : t;
 }
 
-/* The job of a contact pass over the state, and the grid of its positions: cells of 2.125 times the largest
+/* The job of a contact pass over the state, and the grid of its positions: cells of 2.25 times the largest
    radius (so that touching particles are in the same or neighbouring cells, with room for rounding), at
    least 2^-28 of the largest coordinate (so that a cell number fits an int and a quotient's rounding never
    skips a cell); the particles counting-sorted by bucket into the scratch, in index order within one. */
@@ -2394,7 +2459,8 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     const motus_real hi[3] = {scene->bounds_max.x, scene->bounds_max.y, scene->bounds_max.z};
     const motus_real g[3] = {scene->gravity.x, scene->gravity.y, scene->gravity.z};
     motus_real largest_radius = 0, largest_coordinate = 0, cell, g_max = 0, g_sum = 0;
-    int *ints = (int *)((char *)memory + l->coupled + l->copy);
+    motus_real *reals = (motus_real *)(void *)((char *)memory + l->coupled + l->copy);
+    int *ints = (int *)(void *)(reals + 4 * l->pair_capacity);
     int i, d, count = state->count;
     memset(j, 0, sizeof *j);
     j->dims = dims;
@@ -2428,9 +2494,33 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
             if (m > largest_coordinate) largest_coordinate = m;
         }
     }
+    for (d = 0; d < dims; ++d) j->cell[d] = ints, ints += count;
+    j->sorted = ints, ints += count;
+    j->table = ints, ints += l->table_size + 1;
+    j->order = ints, ints += count;
+    j->rank = ints, ints += count;
+    j->supported = ints, ints += count;
+    j->near_wall = ints, ints += count;
+    j->pairs = (motus_contact_pair *)(void *)(ints + l->table_size + 1);
+    j->geometry = reals;
+    j->pair_capacity = l->pair_capacity;
+    j->mask = (unsigned)(l->table_size - 1);
     j->grid = largest_radius > 0 && count > 1;
+    for (i = 0; i < count; ++i) j->order[i] = j->rank[i] = i; /* index order until the grid sorts them */
+    /* the particles within their radius and two of the largest diameters of a wall: the sweeps look at
+       these; the last projection onto the walls looks at all */
+    j->near_walls = 0;
+    for (i = 0; j->walls && i < count; ++i) {
+        const motus_real reach = motus__contact_r(j, i) + 4 * largest_radius;
+        int near = 0;
+        for (d = 0; d < dims; ++d) {
+            const motus_real x = j->x[d][(ptrdiff_t)i * j->stride];
+            near |= (x - lo[d] < reach) | (hi[d] - x < reach); /* Inf - x: never near; overflow: Inf, not near */
+        }
+        if (near) j->near_wall[j->near_walls++] = i;
+    }
     if (!j->grid) return;
-    cell = largest_radius * MOTUS_R(2.125);
+    cell = largest_radius * MOTUS_R(2.25); /* > 2 * MOTUS__REACH: room for rounding */
     if (largest_coordinate / (motus_real)(1 << 28) > cell) cell = largest_coordinate / (motus_real)(1 << 28);
     if (cell < 4 / (motus_real)MOTUS__REAL_MAX) cell = 4 / (motus_real)MOTUS__REAL_MAX;
     j->inverse_cell = 1 / cell;
@@ -2440,13 +2530,6 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     while (j->scale * largest_radius > 2 && j->scale > 4 / (motus_real)MOTUS__REAL_MAX) j->scale *= MOTUS_R(0.5);
     while (j->scale * largest_radius < MOTUS_R(0.25) && j->scale < (motus_real)MOTUS__REAL_MAX / 4) j->scale *= 2;
     j->inverse_scale = 1 / j->scale;
-    for (d = 0; d < 3; ++d) j->cell[d] = NULL;
-    for (d = 0; d < dims; ++d) j->cell[d] = ints, ints += count;
-    j->sorted = ints, ints += count;
-    j->table = ints, ints += l->table_size + 1;
-    j->pairs = (motus_contact_pair *)(void *)ints;
-    j->pair_capacity = l->pair_capacity;
-    j->mask = (unsigned)(l->table_size - 1);
     for (i = 0; i <= (int)l->table_size; ++i) j->table[i] = 0;
     for (i = 0; i < count; ++i) {
         int k[3] = {0, 0, 0};
@@ -2461,20 +2544,51 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     }
     for (i = (int)l->table_size; i > 0; --i) j->table[i] = j->table[i - 1];
     j->table[0] = 0;
+    /* The solver's order: from the bottom up (against gravity; y without gravity), by a counting sort of the
+       heights into as many bins as the table has buckets, index order within a bin. A pile's floor contacts
+       then come before the rows they carry, so one sweep carries a push up the whole pile. */
+    {
+        int axis = 1, *bins = ints;
+        motus_real sign = 1, low = (motus_real)MOTUS__REAL_MAX, high = -(motus_real)MOTUS__REAL_MAX, to_bin = 0;
+        for (d = 0; d < dims; ++d)
+            if ((g[d] < 0 ? -g[d] : g[d]) > (g[axis] < 0 ? -g[axis] : g[axis])) axis = d;
+        if (g[axis] > 0) sign = -1;
+        j->up_axis = axis, j->up_sign = sign;
+        for (i = 0; i < count; ++i) {
+            const motus_real height = sign * j->x[axis][(ptrdiff_t)i * j->stride] * MOTUS_R(0.5); /* halves: */
+            if (height < low) low = height;                                                  /* no overflow */
+            if (height > high) high = height;
+        }
+        if (high > low) to_bin = (motus_real)(l->table_size - 1) / (high - low);
+        if (!motus_real_is_finite(to_bin)) to_bin = 0;
+        for (i = 0; i <= (int)l->table_size; ++i) bins[i] = 0;
+        for (i = 0; i < count; ++i) {
+            const motus_real height = sign * j->x[axis][(ptrdiff_t)i * j->stride] * MOTUS_R(0.5);
+            int bin = (int)((height - low) * to_bin);
+            if (bin < 0) bin = 0;
+            if (bin > (int)l->table_size - 1) bin = (int)l->table_size - 1;
+            j->rank[i] = bin;
+            ++bins[bin + 1];
+        }
+        for (i = 0; i < (int)l->table_size; ++i) bins[i + 1] += bins[i];
+        for (i = 0; i < count; ++i) j->order[bins[j->rank[i]]++] = i;
+        for (i = 0; i < count; ++i) j->rank[j->order[i]] = i;
+    }
 }
 
-/* Do a and b overlap (distance < the sum of their radii)? If so, the unit normal from a to b and the depth
-   (m). Coincident centres get the normal +x. */
-static int motus__overlap(const motus__contact_job *j, int a, int b, motus_real *normal, motus_real *depth) {
+/* Are a and b nearer than `reach` times the sum of their radii (1: overlapping)? If so, the unit normal from
+   a to b and the depth (m; negative: the gap between them). Coincident centres get the normal +x. */
+static inline int motus__overlap(const motus__contact_job *j, int a, int b, motus_real reach, motus_real *normal,
+                                 motus_real *depth) {
     const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
-    const motus_real sum = (motus__contact_r(j, a) + motus__contact_r(j, b)) * j->scale;
+    const motus_real sum = (motus__contact_r(j, a) + motus__contact_r(j, b)) * j->scale, near = sum * reach;
     motus_real u[3] = {0, 0, 0}, d2 = 0, distance;
     int d;
     for (d = 0; d < j->dims; ++d) {
         u[d] = (j->x[d][pb] - j->x[d][pa]) * j->scale; /* Inf when far apart: no contact */
         d2 += u[d] * u[d];
     }
-    if (!(d2 < sum * sum)) return 0;
+    if (!(d2 < near * near)) return 0;
     distance = MOTUS_SQRT(d2);
     for (d = 0; d < j->dims; ++d) normal[d] = distance > 0 ? u[d] / distance : (motus_real)(d == 0);
     *depth = (sum - distance) * j->inverse_scale;
@@ -2488,13 +2602,23 @@ static int motus__overlap(const motus__contact_job *j, int a, int b, motus_real 
    kinetic energy does not grow. */
 static void motus__pair_velocity(motus__contact_job *j, int a, int b, const motus_real *n) {
     const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
-    const motus_real wa = motus__contact_w(j, a), wb = motus__contact_w(j, b), w = wa + wb;
+    const motus_real wb = motus__contact_w(j, b);
+    motus_real wa = motus__contact_w(j, a), w = wa + wb;
     motus_real vn = 0, target, impulse, t[3] = {0, 0, 0}, t2 = 0, tangential, friction;
     int d;
     if (w == 0) return; /* two immovable particles */
+    if (j->shock) {
+        /* the last sweep: a particle resting on a support (a wall, an immovable particle, or a particle that
+           rests on one) is a support for the one above it (within 60 degrees of up): the impulse moves only
+           the upper one */
+        if (!j->supported[a] || wb == 0 || !(n[j->up_axis] * j->up_sign > MOTUS_R(0.5))) return;
+        j->supported[b] = 1;
+        wa = 0, w = wb;
+    }
     for (d = 0; d < j->dims; ++d) vn += (j->v[d][pb] - j->v[d][pa]) * n[d];
     if (!(vn < 0)) return; /* separating or resting */
-    target = vn < -j->threshold ? -j->restitution * vn : 0;
+    /* the support sweep only stops approaches: the bounces were given by the sweeps before it */
+    target = vn < -j->threshold && !j->shock ? -j->restitution * vn : 0;
     impulse = (target - vn) / w;
     for (d = 0; d < j->dims; ++d) {
         j->v[d][pa] -= impulse * wa * n[d];
@@ -2521,7 +2645,9 @@ static void motus__pair_velocity(motus__contact_job *j, int a, int b, const motu
    projection, not a velocity (split impulse): it removes the overlap without adding energy. */
 static void motus__pair_position(motus__contact_job *j, int a, int b, const motus_real *n, motus_real depth) {
     const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
-    const motus_real wa = motus__contact_w(j, a), wb = motus__contact_w(j, b), w = wa + wb;
+    /* the support sweep: only where b is above a (the normal within 60 degrees of up) */
+    const int carried = j->shock && n[j->up_axis] * j->up_sign > MOTUS_R(0.5);
+    const motus_real wb = motus__contact_w(j, b), wa = carried && wb > 0 ? 0 : motus__contact_w(j, a), w = wa + wb;
     int d;
     if (w == 0) return;
     for (d = 0; d < j->dims; ++d) {
@@ -2551,7 +2677,9 @@ static void motus__wall_contacts(motus__contact_job *j, int i, int action) {
             const motus_real vn = e < 0 ? *v : -*v; /* along the wall's normal */
             motus_real target, change, t2 = 0, tangential, keep;
             int k;
-            if (!(e < 0 ? *x < low : *x > high) || !(vn < 0)) continue;
+            if (!(e < 0 ? *x < low : *x > high)) continue;
+            j->supported[i] = 1;
+            if (!(vn < 0)) continue;
             target = vn < -j->threshold ? -j->wall_restitution * vn : 0;
             change = target - vn;
             *v = e < 0 ? target : -target;
@@ -2567,37 +2695,47 @@ static void motus__wall_contacts(motus__contact_job *j, int i, int action) {
     }
 }
 
+/* A near pair in a phase: impulses within MOTUS__TOUCH of touching, projection where they overlap. */
+static void motus__pair_solve(motus__contact_job *j, int a, int b, int phase, const motus_real *n, motus_real depth) {
+    if (phase == MOTUS__PAIRS_VELOCITY) {
+        const motus_real gap_allowed = (motus__contact_r(j, a) + motus__contact_r(j, b)) * MOTUS__TOUCH;
+        if (-depth <= gap_allowed) motus__pair_velocity(j, a, b, n);
+    } else if (depth > 0) {
+        motus__pair_position(j, a, b, n, depth);
+    }
+}
+
 /* Particle i's contacts with the particles after it: the neighbouring cells' buckets (each once: two cells
    may share one), the particles there within one cell of i in every axis, those that overlap. Records them
    (up to room) or solves them; returns how many there were. */
-static size_t motus__pairs_of(motus__contact_job *j, int i, int action, motus_contact_pair *out, size_t room) {
-    unsigned visited[27];
-    int seen = 0, k, s, c[3] = {0, 0, 0}, o[3];
+static size_t motus__pairs_of(motus__contact_job *j, int i, int action, motus_real reach, motus_contact_pair *out,
+                              size_t room) {
+    int k, c[3] = {0, 0, 0}, o[3];
     size_t found = 0;
     motus_real n[3], depth;
     for (k = 0; k < j->dims; ++k) c[k] = j->cell[k][i];
     for (o[2] = j->dims == 3 ? -1 : 0; o[2] <= (j->dims == 3 ? 1 : 0); ++o[2])
         for (o[1] = -1; o[1] <= 1; ++o[1])
             for (o[0] = -1; o[0] <= 1; ++o[0]) {
-                const unsigned b = motus__cell_hash(c[0] + o[0], c[1] + o[1], c[2] + o[2], j->mask);
+                const int t[3] = {c[0] + o[0], c[1] + o[1], c[2] + o[2]}; /* the cell looked at */
+                const unsigned b = motus__cell_hash(t[0], t[1], t[2], j->mask);
                 int other, end, near;
-                for (s = 0; s < seen && visited[s] != b; ++s) continue;
-                if (s < seen) continue;
-                visited[seen++] = b;
+                /* a bucket may hold other cells too (and be some other neighbour's bucket as well): only
+                   this cell's particles, so each is met once */
                 for (other = j->table[b], end = j->table[b + 1]; other < end; ++other) {
                     const int q = j->sorted[other];
-                    if (q <= i) continue;
-                    for (near = 1, k = 0; k < j->dims; ++k) {
-                        const int gap = j->cell[k][q] - c[k];
-                        near &= gap >= -1 && gap <= 1;
-                    }
-                    if (!near || !motus__overlap(j, i, q, n, &depth)) continue;
+                    for (near = j->rank[q] > j->rank[i], k = 0; k < j->dims; ++k) near &= j->cell[k][q] == t[k];
+                    if (!near || !motus__overlap(j, i, q, reach, n, &depth)) continue;
                     if (action == MOTUS__PAIRS_RECORD) {
-                        if (found < room) out[found].a = i, out[found].b = q;
-                    } else if (action == MOTUS__PAIRS_VELOCITY) {
-                        motus__pair_velocity(j, i, q, n);
+                        if (found < room) {
+                            out[found].a = i, out[found].b = q;
+                            if (j->geometry_out) {
+                                motus_real *g = j->geometry_out + 4 * found;
+                                g[0] = n[0], g[1] = n[1], g[2] = j->dims == 3 ? n[2] : 0, g[3] = depth;
+                            }
+                        }
                     } else {
-                        motus__pair_position(j, i, q, n, depth);
+                        motus__pair_solve(j, i, q, action, n, depth);
                     }
                     ++found;
                 }
@@ -2616,26 +2754,47 @@ static motus_result motus__contacts_pass(const motus_scene *scene, const motus_s
     motus__contact_job_init(j, scene, state, dims, h, memory, l);
     j->listed = 0;
     if (j->grid) {
-        for (i = 0; i < j->count; ++i) {
+        for (k = 0; k < (size_t)j->count; ++k) {
             const size_t room = j->pair_capacity - j->pair_count;
-            const size_t found = motus__pairs_of(j, i, MOTUS__PAIRS_RECORD, j->pairs + j->pair_count, room);
+            size_t found;
+            j->geometry_out = j->geometry + 4 * j->pair_count;
+            found = motus__pairs_of(j, j->order[k], MOTUS__PAIRS_RECORD, MOTUS__REACH, j->pairs + j->pair_count, room);
             if (found > room) break; /* this particle's pairs and the rest: searched at every sweep */
             j->pair_count += found;
-            j->listed = i + 1;
+            j->listed = (int)k + 1;
         }
     }
+    /* Velocities: the walls first (a pile's floor stops its bottom row before the rows above meet it).
+       Positions: the walls last (nothing leaves the box). Each phase ends with one more sweep that carries
+       a pile's weight (shock propagation, Guendelman, Bridson and Fedkiw 2003): walls first, then each pair
+       from the bottom up with its lower particle counted immovable, so the rows above do not push the rows
+       below back into the floor. For velocities only where the lower one is supported (a wall, an
+       immovable particle, or one resting on them): in free space every impulse stays equal and opposite. */
     for (phase = MOTUS__PAIRS_VELOCITY; phase <= MOTUS__PAIRS_POSITION; ++phase)
-        for (sweep = 0; sweep < j->iterations; ++sweep) {
+        for (sweep = 0; sweep < j->iterations + (MOTUS_CONTACT_SUPPORT_SWEEPS != 0); ++sweep) {
+            j->shock = sweep == j->iterations;
+            for (i = 0; j->shock && phase == MOTUS__PAIRS_VELOCITY && i < j->count; ++i)
+                j->supported[i] = motus__contact_w(j, i) == 0;
+            for (i = 0; (phase == MOTUS__PAIRS_VELOCITY || j->shock) && i < j->near_walls; ++i)
+                motus__wall_contacts(j, j->near_wall[i], phase);
             for (k = 0; k < j->pair_count; ++k) {
                 motus_real n[3], depth;
                 const int a = j->pairs[k].a, b = j->pairs[k].b;
-                if (!motus__overlap(j, a, b, n, &depth)) continue;
-                if (phase == MOTUS__PAIRS_VELOCITY) motus__pair_velocity(j, a, b, n);
-                else motus__pair_position(j, a, b, n, depth);
+                if (phase == MOTUS__PAIRS_VELOCITY) {
+                    /* positions do not move in this phase: the normal and depth of the listing hold */
+                    const motus_real *g = j->geometry + 4 * k;
+                    n[0] = g[0], n[1] = g[1], n[2] = g[2];
+                    motus__pair_solve(j, a, b, phase, n, g[3]);
+                } else if (motus__overlap(j, a, b, MOTUS__REACH, n, &depth)) {
+                    motus__pair_solve(j, a, b, phase, n, depth);
+                }
             }
-            for (i = j->listed; j->grid && i < j->count; ++i) (void)motus__pairs_of(j, i, phase, NULL, 0);
-            for (i = 0; j->walls && i < j->count; ++i) motus__wall_contacts(j, i, phase);
+            for (i = j->listed; j->grid && i < j->count; ++i)
+                (void)motus__pairs_of(j, j->order[i], phase, MOTUS__REACH, NULL, 0);
+            for (i = 0; phase == MOTUS__PAIRS_POSITION && !j->shock && i < j->near_walls; ++i)
+                motus__wall_contacts(j, j->near_wall[i], phase);
         }
+    for (i = 0; j->walls && i < j->count; ++i) motus__wall_contacts(j, i, MOTUS__PAIRS_POSITION); /* none leaves */
     for (i = 0; i < j->count; ++i)
         for (d = 0; d < dims; ++d)
             if (!motus_real_is_finite(j->x[d][(ptrdiff_t)i * j->stride]) ||
@@ -2793,8 +2952,15 @@ MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus
     }
     for (i = 0; job.grid && i < state->count; ++i) {
         const size_t room = total < (size_t)capacity ? (size_t)capacity - total : 0;
-        total += motus__pairs_of(&job, i, MOTUS__PAIRS_RECORD, room > 0 ? pairs + total : NULL, room);
+        const size_t from = total;
+        size_t k;
+        total += motus__pairs_of(&job, job.order[i], MOTUS__PAIRS_RECORD, 1, room > 0 ? pairs + total : NULL, room);
         if (total > (size_t)INT_MAX) return MOTUS_ERROR_INVALID_COUNT;
+        for (k = from; k < total && k < (size_t)capacity; ++k)
+            if (pairs[k].a > pairs[k].b) {
+                const int swap = pairs[k].a;
+                pairs[k].a = pairs[k].b, pairs[k].b = swap;
+            }
     }
     *found = (int)total;
     return MOTUS_OK;

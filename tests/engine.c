@@ -247,7 +247,8 @@ static void noop_callback(void *user_data, const motus_force_query *q) {
     }
 }
 
-static motus_real SCRATCH[(3 * 6 + 10) * MAX]; /* 3D, RK4: (2 + 4) * 3 reals a particle, + 10 for the checked copy */
+/* 3D, RK4: (2 + 4) * 3 reals a particle, + 11 for the checked copy; contacts: 32 reals and 28 ints */
+static motus_real SCRATCH[(3 * 6 + 11 + 32 + 28 * 2) * MAX + 8192];
 static soa A, B, C, D, E;
 
 /* Splits [0, count) into 1..5 ranges (some may be empty) and steps them in a random order. */
@@ -692,7 +693,7 @@ static int dump(void) {
     for (method = 0; method < MOTUS_METHOD_COUNT; ++method)
         for (dims = 2; dims <= 3; ++dims)
             for (k = 0; k < (int)(sizeof term_sets / sizeof term_sets[0]); ++k)
-                for (coupled = 0; coupled <= 1; ++coupled) {
+                for (coupled = 0; coupled <= 2; ++coupled) { /* 1: springs, 2: contacts */
                     setup s;
                     motus_scene scene;
                     motus_state state;
@@ -705,7 +706,12 @@ static int dump(void) {
                     make_scene(&scene, &s);
                     fill_particles(&A, MAX, &scene, (s.terms & T_MASS) != 0);
                     state = soa_state(&A, dims, MAX, s.terms);
-                    if (coupled) {
+                    if (coupled == 2) {
+                        scene.contacts.enabled = 1;
+                        scene.contacts.radius = dims == 2 ? MOTUS_R(0.4) : MOTUS_R(0.6);
+                        scene.contacts.restitution = MOTUS_R(0.5);
+                        scene.contacts.friction = MOTUS_R(0.2);
+                    } else if (coupled) {
                         for (j = 0; j < 300; ++j) {
                             memset(&springs[j], 0, sizeof springs[j]);
                             springs[j].a = random_int(MAX);
@@ -719,13 +725,13 @@ static int dump(void) {
                     }
                     for (step = 0; step < 8; ++step)
                         errors += motus_step(&scene, &state, s.dt, coupled ? SCRATCH : NULL,
-                                             coupled ? motus_scratch_size(&scene, &state) : 0) != MOTUS_OK;
+                                             coupled ? sizeof SCRATCH : 0) != MOTUS_OK;
                     for (d = 0; d < dims; ++d) {
                         hash = fnv1a(hash, A.x[d], MAX * sizeof(motus_real));
                         hash = fnv1a(hash, A.v[d], MAX * sizeof(motus_real));
                     }
                     printf("%-20s %dD terms 0x%02x%s %016llx\n", motus_method_name(s.method), dims, s.terms,
-                           coupled ? " springs" : "        ", (unsigned long long)hash);
+                           coupled == 2 ? " contacts" : coupled ? " springs " : "         ", (unsigned long long)hash);
                     lines++;
                 }
     printf("%d scenes, %d steps that did not return MOTUS_OK\n", lines, errors);

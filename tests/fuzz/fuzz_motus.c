@@ -236,6 +236,7 @@ typedef struct world {
     motus_particle3 *particles3; /* LAYOUT_PARTICLES, 3D */
     motus_particle *loose;       /* two particles for the particle functions when the layout has none */
     motus_particle3 *loose3;
+    motus_real *radius;          /* per-particle radii at the state's stride, when the state has them */
 } world;
 
 static void force_callback(void *user_data, const motus_force_query *q) {
@@ -320,6 +321,14 @@ static void read_scene(world *w, reader *r) {
         w->model.value = value(r, wild, MOTUS_R(0.25), 1);
         s->force_callback = force_callback;
         s->user_data = &w->model;
+    }
+    if (flags & 8192) { /* contacts, and the walls become contacts */
+        s->contacts.enabled = byte(r) % 8 != 0;
+        s->contacts.radius = value(r, wild, MOTUS_R(1.0) / 64, 0);
+        s->contacts.restitution = value(r, wild, MOTUS_R(1.0) / 254, 0);
+        s->contacts.restitution_threshold = value(r, wild, MOTUS_R(1.0) / 64, 0);
+        s->contacts.friction = value(r, wild, MOTUS_R(1.0) / 64, 0);
+        s->contacts.iterations = small(r, -1, 6);
     }
     if (flags & 4096) { /* one field of the scene anything at all */
         motus_real x = real(r);
@@ -423,6 +432,14 @@ static void build_state(world *w, reader *r) {
         break;
     default: break;
     }
+    /* radii, at the state's stride: mostly ordinary, sometimes anything */
+    w->radius = (motus_real *)(void *)buffer_add(&w->memory, ((size_t)(w->n - 1) * (size_t)stride + 1) * sizeof(motus_real),
+                                                 guard, 10);
+    for (i = 0; i < w->n; ++i) {
+        const unsigned k = byte(r);
+        w->radius[(ptrdiff_t)i * stride] = k >= 240 ? real(r) : (motus_real)(k % 64) / 32;
+    }
+    w->state.radius = byte(r) % 3 ? w->radius : NULL;
     /* two loose particles for the particle functions */
     if (!w->particles) w->loose = (motus_particle *)(void *)buffer_add(&w->memory, 2 * sizeof(motus_particle), guard, 7);
     if (!w->particles3)
@@ -628,10 +645,47 @@ static void step_operation(world *w, reader *r, int ranged) {
     if (result == MOTUS_OK && dt != 0 && count > 0 && precheck_ok) REQUIRE(precheck == MOTUS_OK);
 #endif
     if (result == MOTUS_ERROR_UNSUPPORTED && ranged)
-        REQUIRE(w->scene.spring_count > 0 || w->scene.force_callback || w->scene.method == MOTUS_EXACT_LINEAR_DRAG);
+        REQUIRE(w->scene.spring_count > 0 || w->scene.force_callback || w->scene.contacts.enabled ||
+                w->scene.method == MOTUS_EXACT_LINEAR_DRAG);
     /* a scene the check refuses is refused by the step with the same result */
     if (shape_ok && motus__dt_valid(dt) && scene_result != MOTUS_OK) REQUIRE(result == scene_result);
     buffers_pop(m, before_count);
+}
+
+/* motus_find_contacts: writes only its pairs (up to capacity) and the scratch; each pair a < b in range. */
+static void find_contacts_operation(world *w, reader *r) {
+    motus_state s = variant(w, r);
+    motus_scene colliding = w->scene;
+    const int capacity = small(r, -1, 64), use_pairs = byte(r) % 16 != 0, use_found = byte(r) % 16 != 0;
+    const unsigned mode = byte(r);
+    size_t needed, bytes;
+    unsigned char *scratch = NULL;
+    motus_contact_pair *pairs = NULL;
+    int found = -7, i;
+    motus_result result;
+    const int before_count = w->memory.count;
+    colliding.contacts.enabled = 1;
+    needed = motus_scratch_size(&colliding, &s);
+    bytes = mode < 200 ? needed : mode < 230 ? (needed > 0 ? needed - 1 : 0) : 0;
+    if (needed != (size_t)-1 && bytes < ((size_t)1 << 26) && bytes > 0) scratch = buffer_add(&w->memory, bytes, 16, 11);
+    if (use_pairs && capacity > 0)
+        pairs = (motus_contact_pair *)(void *)buffer_add(&w->memory, (size_t)capacity * sizeof *pairs, 16, 12);
+    snapshot(&w->memory);
+    current_call = "motus_find_contacts";
+    result = motus_find_contacts(&w->scene, &s, scratch, scratch ? bytes : 0, pairs, capacity, use_found ? &found : NULL);
+    check_string(result);
+    if (result == MOTUS_OK) {
+        REQUIRE(found >= 0);
+        if (scratch) allow(&w->memory, scratch, bytes);
+        if (pairs) allow(&w->memory, pairs, (size_t)(found < capacity ? found : capacity) * sizeof *pairs);
+        for (i = 0; pairs && i < found && i < capacity; ++i)
+            REQUIRE(pairs[i].a >= 0 && pairs[i].a < pairs[i].b && pairs[i].b < s.count);
+    } else {
+        REQUIRE(found == -7);
+        if (scratch) allow(&w->memory, scratch, bytes); /* scratch is the call's, even when it refuses */
+    }
+    require_only_allowed(&w->memory, "motus_find_contacts", __LINE__);
+    buffers_pop(&w->memory, before_count);
 }
 
 static void check_operation(world *w, reader *r) {
@@ -865,7 +919,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     build_state(&w, &r);
     read_scene(&w, &r);
     for (ops = 0; ops < MAX_OPERATIONS && more(&r); ++ops) {
-        switch (byte(&r) % 10) {
+        switch (byte(&r) % 11) {
         case 0:
         case 1:
         case 2: step_operation(&w, &r, 0); break;
@@ -886,7 +940,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
             }
             break;
         }
-        default: tables(&r); break;
+        case 9: tables(&r); break;
+        default: find_contacts_operation(&w, &r); break;
         }
     }
     buffers_free(&w.memory);

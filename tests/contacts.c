@@ -1,0 +1,483 @@
+/* Contacts (issue 12): collisions between particles and walls they rest on, against closed forms.
+
+   Head-on and glancing collisions against the 1D and 2D impulse formulas, restitution and its threshold,
+   momentum kept to rounding and kinetic energy never growing in every contact pass (random scenes, no walls,
+   no immovable particles), Newton's cradle, the broadphase against a brute-force O(N^2) search (random
+   scenes, clusters, particles on cell borders, mixed radii, far from the origin), a ball at rest on the
+   floor, a stack of ten at rest, a pile of 2,000 balls that settles, and bad input refused with nothing
+   written. 2D and 3D in each; built in float and double. */
+#define MOTUS_IMPLEMENTATION
+#define MOTUS_STATIC
+#include "motus.h"
+#include "support/motus_test.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef MOTUS_DOUBLE
+#define EPS DBL_EPSILON
+#define REAL_MAX DBL_MAX
+#else
+#define EPS FLT_EPSILON
+#define REAL_MAX FLT_MAX
+#endif
+
+enum { CAPACITY = 2048 };
+typedef struct world {
+    motus_scene scene;
+    motus_state state;
+    motus_real x[3][CAPACITY], v[3][CAPACITY], inverse_mass[CAPACITY], radius[CAPACITY];
+    motus_contact_pair pairs[16 * CAPACITY];
+    unsigned char scratch[CAPACITY * 512];
+} world;
+static world W, BEFORE;
+
+static uint32_t random_state = 1;
+static uint32_t random_next(void) {
+    random_state ^= random_state << 13;
+    random_state ^= random_state >> 17;
+    random_state ^= random_state << 5;
+    return random_state;
+}
+static double random_unit(void) { return (double)(random_next() >> 8) / 16777216.0; }
+static motus_real random_real(double lo, double hi) { return (motus_real)(lo + (hi - lo) * random_unit()); }
+
+/* A world of n particles in `dims`, at rest at the origin, contacts on with radius r, no walls. */
+static void world_init(int dims, int n, motus_real r) {
+    int d;
+    memset(&W, 0, sizeof W);
+    W.scene.contacts.enabled = 1;
+    W.scene.contacts.radius = r;
+    W.state.dimensions = dims;
+    W.state.count = n;
+    for (d = 0; d < dims; ++d) W.state.position[d] = W.x[d], W.state.velocity[d] = W.v[d];
+}
+static motus_result step(motus_real dt) {
+    ENSURE(motus_scratch_size(&W.scene, &W.state) <= sizeof W.scratch);
+    return motus_step(&W.scene, &W.state, dt, W.scratch, sizeof W.scratch);
+}
+static double mass_of(int i) {
+    const motus_real w = W.state.inverse_mass ? W.inverse_mass[i] : 1;
+    return 1.0 / (double)w;
+}
+static double kinetic_energy(void) {
+    double e = 0;
+    int i, d;
+    for (i = 0; i < W.state.count; ++i)
+        for (d = 0; d < W.state.dimensions; ++d) e += 0.5 * mass_of(i) * (double)W.v[d][i] * (double)W.v[d][i];
+    return e;
+}
+static double momentum(int d) {
+    double p = 0;
+    int i;
+    for (i = 0; i < W.state.count; ++i) p += mass_of(i) * (double)W.v[d][i];
+    return p;
+}
+static int same_world(void) {
+    return memcmp(W.x, BEFORE.x, sizeof W.x) == 0 && memcmp(W.v, BEFORE.v, sizeof W.v) == 0;
+}
+
+/* Two equal balls head-on: restitution 1 exchanges the velocities; restitution e leaves -e times the
+   relative normal velocity; unequal masses match the 1D closed form
+   v1' = v1 - (1 + e) m2/(m1 + m2) (v1 - v2), v2' = v2 + (1 + e) m1/(m1 + m2) (v1 - v2). */
+TEST(head_on_matches_the_closed_form) {
+    static const double restitutions[4] = {1, 0.5, 0.25, 0};
+    static const double masses[3][2] = {{1, 1}, {1, 3}, {5, 0.5}};
+    int dims, k, m, s;
+    for (dims = 2; dims <= 3; ++dims)
+        for (k = 0; k < 4; ++k)
+            for (m = 0; m < 3; ++m) {
+                const double e = restitutions[k], m1 = masses[m][0], m2 = masses[m][1];
+                const double u1 = 2, u2 = -1, v1 = u1 - (1 + e) * m2 / (m1 + m2) * (u1 - u2);
+                const double v2 = u2 + (1 + e) * m1 / (m1 + m2) * (u1 - u2);
+                world_init(dims, 2, MOTUS_R(0.5));
+                W.scene.contacts.restitution = (motus_real)e;
+                W.state.inverse_mass = W.inverse_mass;
+                W.inverse_mass[0] = (motus_real)(1 / m1), W.inverse_mass[1] = (motus_real)(1 / m2);
+                W.x[0][0] = -2, W.x[0][1] = 2;
+                W.v[0][0] = (motus_real)u1, W.v[0][1] = (motus_real)u2;
+                for (s = 0; s < 200; ++s) ENSURE_EQ_INT(step(MOTUS_R(0.01)), MOTUS_OK);
+                ENSURE_NEAR(W.v[0][0], v1, 16 * EPS * 4);
+                ENSURE_NEAR(W.v[0][1], v2, 16 * EPS * 4);
+                ENSURE_NEAR(momentum(0), m1 * u1 + m2 * u2, 64 * EPS * 10);
+                ENSURE(W.v[1][0] == 0 && W.v[1][1] == 0);
+                ENSURE(W.x[0][1] - W.x[0][0] >= 1 - 8 * EPS); /* apart again */
+            }
+}
+
+/* A glancing hit of equal balls, restitution 1: along the line of centres at contact the normal components
+   exchange, the tangential ones stay (the 2D closed form); the ball at rest leaves along that line. The
+   solver acts on pairs within 1% of the radii's sum of touching (so that a pile's touching pairs hold), so
+   the line of centres is that of up to 1% before touching: the velocities agree to 1e-2. */
+TEST(glancing_hit_matches_the_closed_form) {
+    int dims;
+    for (dims = 2; dims <= 3; ++dims) {
+        const double b = 0.6; /* impact parameter, < 2r = 1 */
+        double nx, ny, un;
+        int s;
+        world_init(dims, 2, MOTUS_R(0.5));
+        W.scene.contacts.restitution = 1;
+        W.x[0][0] = -3, W.x[1][0] = 0;
+        W.x[0][1] = 0, W.x[1][1] = (motus_real)b;
+        W.v[0][0] = 1;
+        /* at contact the centres are 1 apart: (dx, b) with dx = -sqrt(1 - b^2); the step lands on it up to
+           the overlap of one step (speed 1 * h 1e-3), so the angle is within about 1e-3 */
+        nx = sqrt(1 - b * b), ny = b;
+        un = 1 * nx;
+        for (s = 0; s < 6000; ++s) ENSURE_EQ_INT(step(MOTUS_R(0.001)), MOTUS_OK);
+        ENSURE_NEAR(W.v[0][1] + 0.0, un * nx, 1e-2);
+        ENSURE_NEAR(W.v[1][1] + 0.0, un * ny, 1e-2);
+        ENSURE_NEAR(W.v[0][0] + 0.0, 1 - un * nx, 1e-2);
+        ENSURE_NEAR(W.v[1][0] + 0.0, -un * ny, 1e-2);
+        ENSURE_NEAR(momentum(0), 1, 64 * EPS);
+        ENSURE_NEAR(momentum(1), 0, 64 * EPS);
+        ENSURE_NEAR(kinetic_energy(), 0.5, 1e-3);
+    }
+}
+
+/* Below the restitution threshold a contact does not bounce; above it, it does. */
+TEST(restitution_threshold) {
+    int dims;
+    for (dims = 2; dims <= 3; ++dims) {
+        int s;
+        world_init(dims, 2, MOTUS_R(0.5));
+        W.scene.contacts.restitution = 1;
+        W.scene.contacts.restitution_threshold = MOTUS_R(0.5);
+        W.x[0][0] = -1, W.x[0][1] = 1;
+        W.v[0][0] = MOTUS_R(0.2), W.v[0][1] = MOTUS_R(-0.2); /* approach 0.4 < 0.5 */
+        for (s = 0; s < 400; ++s) ENSURE_EQ_INT(step(MOTUS_R(0.01)), MOTUS_OK);
+        ENSURE_NEAR(W.v[0][0], 0, 8 * EPS);
+        ENSURE_NEAR(W.v[0][1], 0, 8 * EPS);
+        W.v[0][0] = MOTUS_R(-0.3), W.v[0][1] = MOTUS_R(0.3); /* apart, then back at 0.6 > 0.5 */
+        for (s = 0; s < 100; ++s) ENSURE_EQ_INT(step(MOTUS_R(0.01)), MOTUS_OK);
+        W.v[0][0] = -W.v[0][0], W.v[0][1] = -W.v[0][1];
+        for (s = 0; s < 400; ++s) ENSURE_EQ_INT(step(MOTUS_R(0.01)), MOTUS_OK);
+        ENSURE_NEAR(W.v[0][0], -0.3, 16 * EPS);
+        ENSURE_NEAR(W.v[0][1], 0.3, 16 * EPS);
+    }
+}
+
+/* Random scenes without walls or immovable particles: every step (a contact pass per substep) keeps the
+   momentum to rounding and never raises the kinetic energy (restitution <= 1, friction on). */
+TEST(momentum_kept_and_energy_never_grows) {
+    int dims, trial;
+    random_state = 7;
+    for (dims = 2; dims <= 3; ++dims)
+        for (trial = 0; trial < 6; ++trial) {
+            const int n = 300;
+            const double side = dims == 2 ? 20 : 7;
+            int i, d, s;
+            world_init(dims, n, MOTUS_R(0.5));
+            W.state.inverse_mass = W.inverse_mass;
+            W.state.radius = trial % 2 ? W.radius : NULL;
+            W.scene.contacts.restitution = (motus_real)(trial / 2) / 2;
+            W.scene.contacts.friction = MOTUS_R(0.4);
+            W.scene.substeps = 1 + trial % 3;
+            for (i = 0; i < n; ++i) {
+                W.inverse_mass[i] = random_real(0.2, 5);
+                W.radius[i] = random_real(0.2, 0.7);
+                for (d = 0; d < dims; ++d) W.x[d][i] = random_real(0, side), W.v[d][i] = random_real(-3, 3);
+            }
+            for (s = 0; s < 50; ++s) {
+                double before_energy = kinetic_energy(), before_p[3], scale = 0;
+                for (d = 0; d < dims; ++d) before_p[d] = momentum(d);
+                for (i = 0; i < n; ++i)
+                    for (d = 0; d < dims; ++d) scale += mass_of(i) * fabs((double)W.v[d][i]);
+                ENSURE_EQ_INT(step(MOTUS_R(1.0) / 60), MOTUS_OK);
+                for (d = 0; d < dims; ++d) ENSURE_NEAR(momentum(d), before_p[d], 64 * EPS * scale);
+                ENSURE(kinetic_energy() <= before_energy * (1 + 64 * EPS));
+            }
+        }
+}
+
+/* Newton's cradle: five touching balls in a row, restitution 1; the first hits at 1 m/s and the last
+   leaves at 1 m/s, the others at rest. */
+TEST(newtons_cradle) {
+    int dims;
+    for (dims = 2; dims <= 3; ++dims) {
+        int i, s;
+        world_init(dims, 6, MOTUS_R(0.5));
+        W.scene.contacts.restitution = 1;
+        for (i = 0; i < 5; ++i) W.x[0][i + 1] = (motus_real)i; /* touching */
+        W.x[0][0] = -3;
+        W.v[0][0] = 1;
+        for (s = 0; s < 300; ++s) ENSURE_EQ_INT(step(MOTUS_R(0.01)), MOTUS_OK);
+        for (i = 0; i < 5; ++i) ENSURE_NEAR(W.v[0][i], 0, 64 * EPS);
+        ENSURE_NEAR(W.v[0][5], 1, 64 * EPS);
+        ENSURE_NEAR(momentum(0), 1, 64 * EPS);
+    }
+}
+
+/* The broadphase finds exactly the pairs of a brute-force search (distance < r_a + r_b, computed as the
+   header does, in units scaled by a power of two), on random scenes, clusters, particles on cell borders,
+   mixed radii and far from the origin. */
+static int brute_force_overlaps(int a, int b) {
+    const motus_real ra = W.state.radius ? W.radius[a] : W.scene.contacts.radius;
+    const motus_real rb = W.state.radius ? W.radius[b] : W.scene.contacts.radius;
+    double d2 = 0, sum = (double)ra + (double)rb;
+    int d;
+    for (d = 0; d < W.state.dimensions; ++d) {
+        const double u = (double)W.x[d][b] - (double)W.x[d][a];
+        d2 += u * u;
+    }
+    return d2 < sum * sum;
+}
+static int pair_order(const void *p, const void *q) {
+    const motus_contact_pair *a = (const motus_contact_pair *)p, *b = (const motus_contact_pair *)q;
+    return a->a != b->a ? (a->a > b->a) - (a->a < b->a) : (a->b > b->b) - (a->b < b->b);
+}
+static void check_broadphase(const char *what) {
+    int found = -1, i, j, k = 0, n = W.state.count, borderline = 0;
+    ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, sizeof W.scratch, W.pairs, 16 * CAPACITY, &found),
+                  MOTUS_OK);
+    ENSURE(found >= 0 && found <= 16 * CAPACITY);
+    if (found > 16 * CAPACITY) return;
+    for (i = 0; i < found; ++i) ENSURE(W.pairs[i].a < W.pairs[i].b);
+    qsort(W.pairs, (size_t)found, sizeof W.pairs[0], pair_order);
+    for (i = 0; i < n; ++i)
+        for (j = i + 1; j < n; ++j)
+            if (brute_force_overlaps(i, j)) {
+                /* a pair within rounding of touching may fall either way in the header's float arithmetic */
+                if (k < found && W.pairs[k].a == i && W.pairs[k].b == j) ++k;
+                else ++borderline;
+            }
+    if (borderline != 0 || k != found) printf("  %s: %d pairs found, %d matched, %d missed\n", what, found, k, borderline);
+    ENSURE(borderline == 0);
+    ENSURE_EQ_INT(k, found);
+}
+TEST(broadphase_equals_brute_force) {
+    int dims, kind;
+    random_state = 11;
+    for (dims = 2; dims <= 3; ++dims)
+        for (kind = 0; kind < 6; ++kind) {
+            const int n = kind == 1 ? 300 : 1500;
+            int i, d;
+            world_init(dims, n, MOTUS_R(0.5));
+            for (i = 0; i < n; ++i) {
+                for (d = 0; d < dims; ++d) {
+                    double x = random_unit() * (dims == 2 ? 40 : 12);
+                    if (kind == 1) x = random_unit() * 3; /* a cluster: many per cell */
+                    if (kind == 2) x = floor(x / 1.125) * 1.125 + (random_next() & 1 ? 0 : 1.125 * 0.5); /* cells */
+                    if (kind == 4) x = 3e5 + x; /* far from the origin */
+                    if (kind == 5) x = -x;
+                    W.x[d][i] = (motus_real)x;
+                }
+                W.radius[i] = random_real(0.05, 1.0);
+            }
+            if (kind == 3 || kind == 5) W.state.radius = W.radius; /* mixed radii */
+            check_broadphase(kind == 0 ? "random" : kind == 1 ? "cluster" : kind == 2 ? "cell borders" : kind == 3 ? "mixed radii" : kind == 4 ? "far" : "negative, mixed");
+        }
+}
+
+/* A ball dropped on the floor with restitution 0.5 comes to rest on it at floor + r: no hop. */
+TEST(ball_rests_on_the_floor) {
+    int dims;
+    for (dims = 2; dims <= 3; ++dims) {
+        int s;
+        world_init(dims, 1, MOTUS_R(0.25));
+        W.scene.gravity = motus_v3(0, -MOTUS_R(9.81), 0);
+        W.scene.bounds_min = motus_v3(-10, 0, -10);
+        W.scene.bounds_max = motus_v3(10, 10, 10);
+        W.scene.restitution = MOTUS_R(0.5);
+        W.x[1][0] = 3;
+        for (s = 0; s < 600; ++s) ENSURE_EQ_INT(step(MOTUS_R(1.0) / 60), MOTUS_OK);
+        for (s = 0; s < 60; ++s) {
+            ENSURE_EQ_INT(step(MOTUS_R(1.0) / 60), MOTUS_OK);
+            ENSURE(W.x[1][0] == MOTUS_R(0.25));
+            ENSURE(W.v[1][0] == 0);
+        }
+    }
+}
+
+/* Ten balls stacked on the floor rest, each on the one below, velocities 0. */
+TEST(stack_of_ten_rests) {
+    int dims;
+    for (dims = 2; dims <= 3; ++dims) {
+        int i, s;
+        world_init(dims, 10, MOTUS_R(0.5));
+        W.scene.gravity = motus_v3(0, -10, 0);
+        W.scene.bounds_min = motus_v3(-5, 0, -5);
+        W.scene.bounds_max = motus_v3(5, (motus_real)HUGE_VAL, 5);
+        W.scene.substeps = 4;
+        for (i = 0; i < 10; ++i) W.x[1][i] = MOTUS_R(0.5) + (motus_real)i * MOTUS_R(1.05);
+        for (s = 0; s < 300; ++s) ENSURE_EQ_INT(step(MOTUS_R(1.0) / 60), MOTUS_OK);
+        for (i = 0; i < 10; ++i) {
+            ENSURE_NEAR(W.x[1][i], 0.5 + i, 32 * EPS * 10);
+            ENSURE_NEAR(W.v[1][i], 0, 1e-6);
+        }
+    }
+}
+
+/* 2,000 balls (r = 0.5, restitution 0.2, friction 0.3) dropped into a box under gravity 10: after 10 s the
+   largest overlap is below 1% of r, the kinetic energy below 1e-4 of the potential energy they started
+   with (above the floor), and every ball is inside the box. */
+TEST(pile_of_2000_settles) {
+    int dims;
+    for (dims = 2; dims <= 3; ++dims) {
+        const int n = 2000;
+        const motus_real r = MOTUS_R(0.5), side = dims == 2 ? 40 : 12;
+        const int per_row = (int)(side / (MOTUS_R(2.2) * r));
+        double potential = 0, largest = 0;
+        int i, d, s, found = 0;
+        world_init(dims, n, r);
+        random_state = 3;
+        W.scene.gravity = motus_v3(0, -10, 0);
+        W.scene.bounds_min = motus_v3(0, 0, 0);
+        W.scene.bounds_max = motus_v3(side, (motus_real)HUGE_VAL, side);
+        W.scene.restitution = W.scene.contacts.restitution = MOTUS_R(0.2);
+        W.scene.contacts.friction = MOTUS_R(0.3);
+        W.scene.substeps = 4;
+        for (i = 0; i < n; ++i) {
+            const int column = i % per_row, layer = i / per_row;
+            W.x[0][i] = r * MOTUS_R(1.1) + (motus_real)column * MOTUS_R(2.2) * r + random_real(0, 0.1);
+            if (dims == 2) {
+                W.x[1][i] = r * MOTUS_R(1.1) + (motus_real)layer * MOTUS_R(2.2) * r + 5;
+            } else {
+                W.x[2][i] = r * MOTUS_R(1.1) + (motus_real)(layer % per_row) * MOTUS_R(2.2) * r;
+                W.x[1][i] = r * MOTUS_R(1.1) + (motus_real)(layer / per_row) * MOTUS_R(2.2) * r + 5;
+            }
+            potential += 10.0 * ((double)W.x[1][i] - (double)r);
+        }
+        for (s = 0; s < 600; ++s) ENSURE_EQ_INT(step(MOTUS_R(1.0) / 60), MOTUS_OK);
+        ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, sizeof W.scratch, W.pairs, 16 * CAPACITY, &found),
+                      MOTUS_OK);
+        for (i = 0; i < found; ++i) {
+            double d2 = 0, overlap;
+            for (d = 0; d < dims; ++d) {
+                const double u = (double)W.x[d][W.pairs[i].b] - (double)W.x[d][W.pairs[i].a];
+                d2 += u * u;
+            }
+            overlap = 2 * (double)r - sqrt(d2);
+            if (overlap > largest) largest = overlap;
+        }
+        printf("  %dD: largest overlap %.3g r, kinetic / initial potential energy %.3g\n", dims, largest / r,
+               kinetic_energy() / potential);
+        ENSURE(largest < 0.01 * r);
+        ENSURE(kinetic_energy() < 1e-4 * potential);
+        for (i = 0; i < n; ++i)
+            for (d = 0; d < dims; ++d) {
+                ENSURE(W.x[d][i] >= r - 8 * EPS * side);
+                if (d != 1) ENSURE(W.x[d][i] <= side - r + 8 * EPS * side);
+            }
+    }
+}
+
+/* Bad input: nothing written, the field named where a report is asked for. */
+TEST(bad_input_is_refused) {
+    motus_check_report report;
+    int dims, found = 7;
+    for (dims = 2; dims <= 3; ++dims) {
+        world_init(dims, 4, MOTUS_R(0.5));
+        W.x[0][1] = MOTUS_R(0.5), W.x[0][2] = 5, W.x[0][3] = 10;
+        W.v[0][0] = 1;
+        memcpy(&BEFORE, &W, sizeof W);
+        W.scene.contacts.radius = -1;
+        ENSURE_EQ_INT(step(MOTUS_R(0.1)), MOTUS_ERROR_INVALID_CONTACTS);
+        ENSURE_EQ_INT(motus_scene_check(&W.scene, dims, 4, &report), MOTUS_ERROR_INVALID_CONTACTS);
+        ENSURE(strcmp(report.field_name, "scene.contacts.radius") == 0);
+        W.scene.contacts.radius = (motus_real)NAN;
+        ENSURE_EQ_INT(step(MOTUS_R(0.1)), MOTUS_ERROR_NOT_FINITE);
+        W.scene.contacts.radius = (motus_real)(REAL_MAX / 4);
+        ENSURE_EQ_INT(step(MOTUS_R(0.1)), MOTUS_ERROR_INVALID_CONTACTS);
+        W.scene.contacts.radius = MOTUS_R(0.5);
+        W.scene.contacts.friction = -MOTUS_R(0.1);
+        ENSURE_EQ_INT(motus_scene_check(&W.scene, dims, 4, &report), MOTUS_ERROR_INVALID_CONTACTS);
+        ENSURE(strcmp(report.field_name, "scene.contacts.friction") == 0);
+        W.scene.contacts.friction = 0;
+        W.scene.contacts.restitution = MOTUS_R(1.5);
+        ENSURE_EQ_INT(motus_scene_check(&W.scene, dims, 4, &report), MOTUS_ERROR_INVALID_RESTITUTION);
+        ENSURE(strcmp(report.field_name, "scene.contacts.restitution") == 0);
+        W.scene.contacts.restitution = 0;
+        W.scene.contacts.restitution_threshold = -1;
+        ENSURE_EQ_INT(step(MOTUS_R(0.1)), MOTUS_ERROR_INVALID_CONTACTS);
+        W.scene.contacts.restitution_threshold = 0;
+        W.scene.contacts.iterations = -1;
+        ENSURE_EQ_INT(step(MOTUS_R(0.1)), MOTUS_ERROR_INVALID_CONTACTS);
+        W.scene.contacts.iterations = 0;
+        /* per-particle radii: negative, NaN; the state check names the particle */
+        W.state.radius = W.radius;
+        W.radius[0] = W.radius[1] = W.radius[3] = MOTUS_R(0.5);
+        W.radius[2] = -MOTUS_R(0.5);
+        ENSURE_EQ_INT(step(MOTUS_R(0.1)), MOTUS_ERROR_INVALID_CONTACTS);
+        ENSURE_EQ_INT(motus_state_check(&W.scene, &W.state, 0, 4, &report), MOTUS_ERROR_INVALID_CONTACTS);
+        ENSURE(report.index == 2 && report.field == MOTUS_FIELD_RADIUS && strcmp(report.field_name, "radius") == 0);
+        W.radius[2] = (motus_real)NAN;
+        ENSURE_EQ_INT(step(MOTUS_R(0.1)), MOTUS_ERROR_NOT_FINITE);
+        ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, sizeof W.scratch, W.pairs, 8, &found),
+                      MOTUS_ERROR_NOT_FINITE);
+        W.radius[2] = MOTUS_R(0.5);
+        /* scratch: too small, NULL, misaligned */
+        ENSURE_EQ_INT(motus_step(&W.scene, &W.state, MOTUS_R(0.1), W.scratch, motus_scratch_size(&W.scene, &W.state) - 1),
+                      MOTUS_ERROR_SCRATCH_TOO_SMALL);
+        ENSURE_EQ_INT(motus_step(&W.scene, &W.state, MOTUS_R(0.1), NULL, 0), MOTUS_ERROR_SCRATCH_TOO_SMALL);
+        ENSURE_EQ_INT(motus_step(&W.scene, &W.state, MOTUS_R(0.1), W.scratch + 1, sizeof W.scratch - 1),
+                      MOTUS_ERROR_SCRATCH_TOO_SMALL);
+        /* NaN position */
+        W.x[1][3] = (motus_real)NAN;
+        memcpy(BEFORE.x, W.x, sizeof W.x);
+        ENSURE_EQ_INT(step(MOTUS_R(0.1)), MOTUS_ERROR_NOT_FINITE);
+#ifdef MOTUS_CHECKED
+        ENSURE(same_world());
+#endif
+        W.x[1][3] = 0;
+        memcpy(BEFORE.x, W.x, sizeof W.x);
+        memcpy(BEFORE.v, W.v, sizeof W.v);
+        ENSURE(same_world());
+        /* find_contacts arguments; the range API does not take contacts */
+        ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, sizeof W.scratch, NULL, 8, &found),
+                      MOTUS_ERROR_NULL_POINTER);
+        ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, sizeof W.scratch, W.pairs, 8, NULL),
+                      MOTUS_ERROR_NULL_POINTER);
+        ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, sizeof W.scratch, W.pairs, -1, &found),
+                      MOTUS_ERROR_INVALID_COUNT);
+        ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, 4, W.pairs, 8, &found),
+                      MOTUS_ERROR_SCRATCH_TOO_SMALL);
+        ENSURE_EQ_INT(motus_step_range(&W.scene, &W.state, 0, 4, MOTUS_R(0.1)), MOTUS_ERROR_UNSUPPORTED);
+        ENSURE(same_world());
+        /* a capacity smaller than the pairs: the count is whole, only `capacity` written */
+        ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, sizeof W.scratch, W.pairs, 0, &found), MOTUS_OK);
+        ENSURE_EQ_INT(found, 1);
+        /* a count whose scratch would overflow size_t */
+        W.state.count = INT32_MAX;
+        ENSURE(motus_scratch_size(&W.scene, &W.state) == (size_t)-1 ||
+               motus_scratch_size(&W.scene, &W.state) > (size_t)INT32_MAX * 16);
+        ENSURE_EQ_INT(motus_step(&W.scene, &W.state, MOTUS_R(0.1), W.scratch, sizeof W.scratch),
+                      MOTUS_ERROR_SCRATCH_TOO_SMALL);
+    }
+}
+
+/* Immovable particles are obstacles: a ball bounces off one that does not move. */
+TEST(immovable_particles_are_obstacles) {
+    int dims;
+    for (dims = 2; dims <= 3; ++dims) {
+        int s;
+        world_init(dims, 2, MOTUS_R(0.5));
+        W.state.inverse_mass = W.inverse_mass;
+        W.inverse_mass[0] = 1, W.inverse_mass[1] = 0;
+        W.scene.contacts.restitution = 1;
+        W.x[0][0] = -3;
+        W.v[0][0] = 2;
+        for (s = 0; s < 300; ++s) ENSURE_EQ_INT(step(MOTUS_R(0.01)), MOTUS_OK);
+        ENSURE_NEAR(W.v[0][0], -2, 16 * EPS);
+        ENSURE(W.x[0][1] == 0 && W.v[0][1] == 0);
+    }
+}
+
+static const motus_test_case TESTS[] = {
+    TEST_CASE(head_on_matches_the_closed_form),
+    TEST_CASE(glancing_hit_matches_the_closed_form),
+    TEST_CASE(restitution_threshold),
+    TEST_CASE(momentum_kept_and_energy_never_grows),
+    TEST_CASE(newtons_cradle),
+    TEST_CASE(broadphase_equals_brute_force),
+    TEST_CASE(ball_rests_on_the_floor),
+    TEST_CASE(stack_of_ten_rests),
+    TEST_CASE(pile_of_2000_settles),
+    TEST_CASE(bad_input_is_refused),
+    TEST_CASE(immovable_particles_are_obstacles),
+};
+
+int main(int argc, char **argv) { return motus_test_main(argc, argv, TESTS, TEST_COUNT(TESTS)); }
