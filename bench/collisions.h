@@ -1,8 +1,8 @@
 /* collisions.h - what the parts of bench/collisions say to each other (issue 12, item 8).
    collisions.cpp           the scenes, the timing, the overlap and energy measurements, every output file;
    collisions_motus.c       motus_step with scene.contacts (built only when include/motus.h has motus_contacts);
-   collisions_brute.c       the same contact model as motus (COLLISIONS.md: integrate, then Gauss-Seidel
-                            velocity impulses, then position projection), but every pair tested: O(N^2);
+   collisions_brute.c       a brute-force pair loop with the plain contact model of COLLISIONS.md (integrate,
+                            then Gauss-Seidel velocity impulses, then position projection): O(N^2);
    collisions_box2d.cpp     Box2D 2.4 circles (Debian libbox2d-dev);
    collisions_chipmunk.c    Chipmunk 7 circles (libchipmunk-dev);
    collisions_bullet.cpp    Bullet spheres, 3D (libbullet-dev).

@@ -1,10 +1,13 @@
-/* collisions_brute.c - the brute-force peer of bench/collisions: motus's contact model as COLLISIONS.md
-   describes it, with every pair tested instead of a grid. Each substep of dt/substeps: semi-implicit Euler
-   under gravity; the contacts found by testing all N(N-1)/2 pairs (once per substep, as a broadphase would);
-   `iterations` Gauss-Seidel sweeps of velocity impulses along the normal (restitution 0: the approach speed
-   removed, equal masses), the walls as contacts at the ball's radius; then `iterations` sweeps of position
-   projection (split impulse: positions only, no velocity change, so no energy added). Float, like motus's
-   default motus_real. Capped at N = 10^4 by the driver (10^8 pair tests per substep at 10^5). */
+/* collisions_brute.c - the brute-force peer of bench/collisions: the pair loop a user would write, with the
+   plain contact model of COLLISIONS.md, every pair tested instead of a grid. Each substep of dt/substeps:
+   semi-implicit Euler under gravity; the touching pairs found by testing all N(N-1)/2 (once per substep, as a
+   broadphase would); `iterations` Gauss-Seidel sweeps of velocity impulses along the normal (restitution 0:
+   the approach speed removed, equal masses), the walls as contacts at the ball's radius; then `iterations`
+   sweeps of position projection (split impulse: positions only, no velocity change, so no energy added).
+   Float, like motus's default motus_real; the same substeps and iterations as motus. motus's own solver has
+   more since (pairs kept within 1.1 times the radii's sum, a support sweep that carries a pile's weight:
+   motus.h >>contacts); the loop keeps the plain model. Capped at N = 10^4 by the driver (10^8 pair tests per
+   substep at 10^5). */
 #include "collisions.h"
 
 #include <math.h>
@@ -163,8 +166,9 @@ static void brute_read(void *world, double *x[3], double *v[3]) {
 }
 
 static const char *brute_describe(void) {
-    return "all N(N-1)/2 pairs tested once a substep; float; the motus contact model (Gauss-Seidel velocity "
-           "impulses, then position projection) with the same substeps and iterations";
+    return "all N(N-1)/2 pairs tested once a substep; float; the plain model of COLLISIONS.md (Gauss-Seidel "
+           "velocity impulses on touching pairs, then position projection; no contact reach or support sweep, "
+           "which motus's solver has), motus's substeps (4) and iterations (4)";
 }
 
 const cb_engine cb_engine_brute = {"brute", (1 << 2) | (1 << 3), 10000, brute_create, brute_step, brute_read,
