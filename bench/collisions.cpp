@@ -1,6 +1,7 @@
 // collisions.cpp - bench/collisions (issue 12, item 8): balls in a box, motus against what a game programmer
 // would pick instead, in the same run and the same scene.
-//   collisions [--out DIR] [--quick] [--sizes N,N,...] [--engines a,b,...] [--cap S] [--run-cap S]
+//   collisions [--out DIR] [--quick] [--sizes N,N,...] [--engines a,b,...] [--dims 2,3] [--scenes drop,pile]
+//              [--cap S] [--run-cap S]
 // Scenes (collisions.h: every engine gets the same start, as doubles):
 //   drop  N balls of radius r = 0.5 m on a jittered grid of spacing 2.2 r above the floor of a box open at the
 //         top, each with a random velocity in [-1, 1] m/s per component (the same seed for every engine), fall
@@ -18,7 +19,7 @@
 // kinetic energy / initial potential energy (above the resting height r) after the last frame.
 // A peer is skipped at a size where one step takes more than --cap seconds (2), measured (the first step, which
 // finds every pair from scratch, may take 5 caps) or predicted linearly from the size below; motus runs at every
-// size up to 10 caps a step. A run stops early after --run-cap seconds (40) of stepping.
+// size, and where a step takes more than 10 caps it stops there and reports the steps it made. A run stops early after --run-cap seconds (40) of stepping.
 // --quick: N = 300 and 2000, a few frames: a smoke run in seconds (ctest bench.collisions_quick_run).
 // Writes DIR/collisions.csv, DIR/collisions.md (also printed on stdout), DIR/plot/*.dat and DIR/plot/info.gp
 // for bench/plot_collisions.gp; progress goes to stderr. scripts/collisions.sh runs it and draws the figure.
@@ -48,7 +49,8 @@ struct options {
     std::string out = "collisions-out";
     bool quick = false;
     std::vector<int> sizes;
-    std::vector<std::string> engines;
+    std::vector<std::string> engines, scenes = {"drop", "pile"};
+    std::vector<int> dims = {2, 3};
     double cap = 2.0, run_cap = 40.0;
 };
 
@@ -326,7 +328,14 @@ row run(const cb_engine &e, const start &st, const std::string &scene, const opt
             break;
         }
     }
-    if (!failed && !too_slow) {
+    // motus over its cap: the steps it made are measured (the last one included), the run stops there.
+    if (too_slow && subject) {
+        e.read(world, x, v);
+        const overlap_result ov = measure_overlap(s, x, grid);
+        largest = std::max(largest, ov.largest);
+        escaped = std::max(escaped, ov.escaped);
+    }
+    if (!failed && (!too_slow || subject)) {
         e.read(world, x, v);
         out.ke = kinetic(s, v) / st.pe0;
     }
@@ -337,7 +346,7 @@ row run(const cb_engine &e, const start &st, const std::string &scene, const opt
         out.note = "failed: the step returned an error at frame " + std::to_string(done);
         return out;
     }
-    if (too_slow) {
+    if (too_slow && !subject) {
         out.note = "skipped: one step took " + fmt("%.1f", times.back()) + " s";
         return out;
     }
@@ -348,6 +357,9 @@ row run(const cb_engine &e, const start &st, const std::string &scene, const opt
     out.note = std::to_string(m) + " frames";
     if (f.warm) out.note += " after " + std::to_string(f.warm);
     if (stopped) out.note += " (stopped early: " + std::to_string(f.measured) + " planned)";
+    if (too_slow)
+        out.note += " (stopped: a step took " + fmt("%.1f", times.back()) + " s, over " + fmt("%.0f", cap) + " s; " +
+                    std::to_string(done) + " of " + std::to_string(f.warm + f.measured) + " frames made)";
     out.note += "; setup " + fmt("%.2g", setup) + " s";
     if (teardown > 1) out.note += ", teardown " + fmt("%.2g", teardown) + " s";
     if (escaped) out.note += "; " + std::to_string(escaped) + " escaped";
@@ -535,8 +547,8 @@ std::vector<std::string> split(const std::string &s) {
 }
 
 int usage() {
-    std::fprintf(stderr, "usage: collisions [--out DIR] [--quick] [--sizes N,N,...] [--engines a,b,...] [--cap S] "
-                         "[--run-cap S]\n");
+    std::fprintf(stderr, "usage: collisions [--out DIR] [--quick] [--sizes N,N,...] [--engines a,b,...] [--dims 2,3] "
+                         "[--scenes drop,pile] [--cap S] [--run-cap S]\n");
     return 2;
 }
 
@@ -552,6 +564,11 @@ int main(int argc, char **argv) {
         else if (a == "--sizes" && has_value)
             for (const std::string &n : split(argv[++i])) o.sizes.push_back((int)std::atof(n.c_str()));
         else if (a == "--engines" && has_value) o.engines = split(argv[++i]);
+        else if (a == "--scenes" && has_value) o.scenes = split(argv[++i]);
+        else if (a == "--dims" && has_value) {
+            o.dims.clear();
+            for (const std::string &d : split(argv[++i])) o.dims.push_back(std::atoi(d.c_str()));
+        }
         else if (a == "--cap" && has_value) o.cap = std::atof(argv[++i]);
         else if (a == "--run-cap" && has_value) o.run_cap = std::atof(argv[++i]);
         else return usage();
@@ -596,9 +613,10 @@ int main(int argc, char **argv) {
     const cpu_use before = cpu_now();
     const double started = now();
     std::vector<row> rows;
-    for (int dims = 2; dims <= 3; ++dims)
-        for (const char *scene : {"drop", "pile"})
+    for (int dims : o.dims)
+        for (const std::string &scene_name : o.scenes)
             for (int n : o.sizes) {
+                const char *scene = scene_name.c_str();
                 start st;
                 make_start(st, dims, scene, n);
                 for (const cb_engine *e : engines) {
