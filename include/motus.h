@@ -2416,6 +2416,7 @@ typedef struct motus__contact_job {
     motus_real lo[3], hi[3];
     motus_real inverse_cell, scale, inverse_scale; /* cell = 1/inverse_cell; scale: a power of two, radii ~ 1 */
     int *cell[3], *sorted, *table, *order, *rank, *supported, *near_wall, near_walls, shock, up_axis;
+    int half[14][3], half_count; /* the own cell, then the cells after it in (up, other axes) order */
     motus_real *geometry, *geometry_out; /* per listed pair: the normal and the depth when it was listed */
     motus_real up_sign;
     unsigned mask;
@@ -2554,6 +2555,18 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
             if ((g[d] < 0 ? -g[d] : g[d]) > (g[axis] < 0 ? -g[axis] : g[axis])) axis = d;
         if (g[axis] > 0) sign = -1;
         j->up_axis = axis, j->up_sign = sign;
+        {
+            const int first = axis == 0 ? 1 : 0, second = 3 - axis - first;
+            int o[3];
+            j->half_count = 0;
+            for (o[axis] = 0; o[axis] <= 1; ++o[axis])
+                for (o[second] = dims == 3 ? -1 : 0; o[second] <= (dims == 3 ? 1 : 0); ++o[second])
+                    for (o[first] = -1; o[first] <= 1; ++o[first]) {
+                        if (o[axis] == 0 && (o[second] < 0 || (o[second] == 0 && o[first] < 0))) continue;
+                        j->half[j->half_count][0] = o[0], j->half[j->half_count][1] = o[1];
+                        j->half[j->half_count][2] = o[2], ++j->half_count;
+                    }
+        }
         for (i = 0; i < count; ++i) {
             const motus_real height = sign * j->x[axis][(ptrdiff_t)i * j->stride] * MOTUS_R(0.5); /* halves: */
             if (height < low) low = height;                                                  /* no overflow */
@@ -2705,41 +2718,48 @@ static void motus__pair_solve(motus__contact_job *j, int a, int b, int phase, co
     }
 }
 
-/* Particle i's contacts with the particles after it: the neighbouring cells' buckets (each once: two cells
-   may share one), the particles there within one cell of i in every axis, those that overlap. Records them
-   (up to room) or solves them; returns how many there were. */
+/* Particle i's contacts in its half of the neighbourhood: its own cell's particles after it (index order),
+   and the cells after its own in (up, then the other axes) order: 4 cells of 8 in 2D, 13 of 26 in 3D, so
+   that each pair is met once, from one of its two particles. The pair is given lower particle first (in
+   the solver's order), with the normal from it to the other. Records them (up to room) or solves them;
+   returns how many there were. */
 static size_t motus__pairs_of(motus__contact_job *j, int i, int action, motus_real reach, motus_contact_pair *out,
                               size_t room) {
-    int k, c[3] = {0, 0, 0}, o[3];
+    const int c0 = j->cell[0][i], c1 = j->cell[1][i], c2 = j->dims == 3 ? j->cell[2][i] : 0;
+    int cell;
     size_t found = 0;
     motus_real n[3], depth;
-    for (k = 0; k < j->dims; ++k) c[k] = j->cell[k][i];
-    for (o[2] = j->dims == 3 ? -1 : 0; o[2] <= (j->dims == 3 ? 1 : 0); ++o[2])
-        for (o[1] = -1; o[1] <= 1; ++o[1])
-            for (o[0] = -1; o[0] <= 1; ++o[0]) {
-                const int t[3] = {c[0] + o[0], c[1] + o[1], c[2] + o[2]}; /* the cell looked at */
-                const unsigned b = motus__cell_hash(t[0], t[1], t[2], j->mask);
-                int other, end, near;
-                /* a bucket may hold other cells too (and be some other neighbour's bucket as well): only
-                   this cell's particles, so each is met once */
-                for (other = j->table[b], end = j->table[b + 1]; other < end; ++other) {
-                    const int q = j->sorted[other];
-                    for (near = j->rank[q] > j->rank[i], k = 0; k < j->dims; ++k) near &= j->cell[k][q] == t[k];
-                    if (!near || !motus__overlap(j, i, q, reach, n, &depth)) continue;
-                    if (action == MOTUS__PAIRS_RECORD) {
-                        if (found < room) {
-                            out[found].a = i, out[found].b = q;
-                            if (j->geometry_out) {
-                                motus_real *g = j->geometry_out + 4 * found;
-                                g[0] = n[0], g[1] = n[1], g[2] = j->dims == 3 ? n[2] : 0, g[3] = depth;
-                            }
-                        }
-                    } else {
-                        motus__pair_solve(j, i, q, action, n, depth);
-                    }
-                    ++found;
-                }
+    for (cell = 0; cell < j->half_count; ++cell) {
+        const int t0 = c0 + j->half[cell][0], t1 = c1 + j->half[cell][1], t2 = c2 + j->half[cell][2];
+        const unsigned b = motus__cell_hash(t0, t1, t2, j->mask);
+        int other, end;
+        /* a bucket may hold other cells too (and be some other neighbour's bucket as well): only this
+           cell's particles, so each is met once; in its own cell, the particles after it */
+        for (other = j->table[b], end = j->table[b + 1]; other < end; ++other) {
+            const int q = j->sorted[other];
+            int lower, upper, d;
+            if ((cell == 0 && q <= i) || j->cell[0][q] != t0 || j->cell[1][q] != t1 ||
+                (j->dims == 3 && j->cell[2][q] != t2) || !motus__overlap(j, i, q, reach, n, &depth))
+                continue;
+            lower = i, upper = q;
+            if (j->rank[q] < j->rank[i]) {
+                lower = q, upper = i;
+                for (d = 0; d < 3; ++d) n[d] = -n[d];
             }
+            if (action == MOTUS__PAIRS_RECORD) {
+                if (found < room) {
+                    out[found].a = lower, out[found].b = upper;
+                    if (j->geometry_out) {
+                        motus_real *g = j->geometry_out + 4 * found;
+                        g[0] = n[0], g[1] = n[1], g[2] = j->dims == 3 ? n[2] : 0, g[3] = depth;
+                    }
+                }
+            } else {
+                motus__pair_solve(j, lower, upper, action, n, depth);
+            }
+            ++found;
+        }
+    }
     return found;
 }
 

@@ -4,6 +4,7 @@
 #include "motus.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 
 /* The textbook step on one particle. */
 static motus_particle textbook(motus_real dt) {
@@ -31,6 +32,26 @@ static motus_result many(motus_particle *balls, int count, motus_real dt) {
     return r;
 }
 
+/* Collisions (the README's and >>usage's snippet): balls that pile up on the floor of a box. */
+static motus_result pile(motus_particle *balls, int count, motus_real dt) {
+    motus_scene scene = {0};
+    motus_state state = motus_state_of_particles(balls, count);
+    motus_result r = MOTUS_OK;
+    int frame;
+    scene.contacts.enabled = 1;
+    scene.contacts.radius = 8;              /* or state.radius = radii: one per particle */
+    scene.contacts.restitution = 0.3f;      /* between particles; the walls use scene.restitution */
+    scene.contacts.friction = 0.3f;
+    scene.gravity = motus_v3(0, 500, 0);    /* raylib: y grows downwards */
+    scene.bounds_min = motus_v3(0, 0, 0);
+    scene.bounds_max = motus_v3(800, 450, 0);
+    size_t bytes = motus_scratch_size(&scene, &state);   /* the grid and the contact list live here */
+    void *scratch = malloc(bytes);
+    for (frame = 0; frame < 300 && r == MOTUS_OK; ++frame) r = motus_step(&scene, &state, dt, scratch, bytes);
+    free(scratch);
+    return r;
+}
+
 int main(void) {
     motus_particle ball = textbook(1.0f / 60.0f), balls[3];
     int i, bad = 0;
@@ -38,6 +59,10 @@ int main(void) {
     bad |= !(ball.position.x > 400 && ball.position.x < 425.42f);
     bad |= many(balls, 3, 0.5f) != MOTUS_OK;
     bad |= balls[2].position.x != 2 || !(balls[2].position.y > 1.2f && balls[2].position.y < 1.3f); /* g t^2/2 */
+    for (i = 0; i < 3; ++i) motus_particle_init(&balls[i], motus_v2(400, 100 + 20 * (motus_real)i), 1);
+    bad |= pile(balls, 3, 1.0f / 60.0f) != MOTUS_OK;
+    bad |= balls[2].position.y != 450 - 8 || balls[2].velocity.y != 0; /* the lowest: at rest on the floor */
+    bad |= !(balls[0].position.y < 450 - 8 - 31.9f);                      /* two balls up: on top, not inside */
     printf("%s: the >>usage snippets compile and run (x = %.3f, y = %.4f)\n", bad ? "FAILED" : "ok",
            (double)ball.position.x, (double)balls[2].position.y);
     return bad;

@@ -530,6 +530,10 @@ static int verbose; /* FUZZ_MOTUS_VERBOSE set: each step says what it was given 
 static unsigned long reached[MOTUS_METHOD_COUNT][2];
 
 /* ---- the engine calls ---- */
+static int walls_on(const motus_scene *scene, int dims) {
+    return scene->bounds_min.x != 0 || scene->bounds_min.y != 0 || scene->bounds_max.x != 0 || scene->bounds_max.y != 0 ||
+           (dims == 3 && (scene->bounds_min.z != 0 || scene->bounds_max.z != 0));
+}
 static void step_operation(world *w, reader *r, int ranged) {
     motus_state s = variant(w, r);
     const motus_real dt = read_dt(r);
@@ -635,8 +639,9 @@ static void step_operation(world *w, reader *r, int ranged) {
         /* nothing was written, so the data itself was bad */
         REQUIRE(precheck_ok && precheck == MOTUS_ERROR_NOT_FINITE);
 #else
-        /* (2) the particles read or the ones written hold a NaN or an Inf */
-        REQUIRE(precheck_ok && (precheck != MOTUS_OK || !range_finite(&s, first, end)));
+        /* (2) the particles read or the ones written hold a NaN or an Inf; or a step overflowed and the walls
+           (bounds, or contact walls) clamped what it wrote back inside: the check is made before the walls */
+        REQUIRE(precheck_ok && (precheck != MOTUS_OK || !range_finite(&s, first, end) || walls_on(&w->scene, dims)));
 #endif
     }
 #ifdef MOTUS_CHECKED
