@@ -363,6 +363,7 @@ row run(const cb_engine &e, const start &st, const std::string &scene, const opt
     out.note += "; setup " + fmt("%.2g", setup) + " s";
     if (teardown > 1) out.note += ", teardown " + fmt("%.2g", teardown) + " s";
     if (escaped) out.note += "; " + std::to_string(escaped) + " escaped";
+    if (scene == "pile" && out.ke > 1) out.note += "; **the pile blew up** (kinetic energy above the start's potential)";
     return out;
 }
 
