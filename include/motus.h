@@ -1081,7 +1081,8 @@ MOTUS_DEF motus_result motus_max_stable_dt(motus_method method, motus_real stiff
        1e-30 N/m on 1e30 kg is a finite 2e30 s for semi-implicit Euler). */
     {
         const motus_real limit = motus_method_stability_limit(method);
-        *max_dt = !motus_real_is_finite(limit) ? limit : limit * (MOTUS_SQRT(mass) / MOTUS_SQRT(stiffness));
+        /* limit 0 (explicit Euler, midpoint): 0 at any stiffness, not 0 * Inf when the root ratio overflows */
+        *max_dt = !motus_real_is_finite(limit) || limit == 0 ? limit : limit * (MOTUS_SQRT(mass) / MOTUS_SQRT(stiffness));
     }
     return MOTUS_OK;
 }
@@ -2154,7 +2155,8 @@ static int motus__layout_of(const motus_scene *scene, const motus_state *state, 
     if (motus__coupled(scene) || contacts) l->copy = (size_t)(3 * dims + 1 + contacts) * real;
 #endif
     if (contacts) {
-        /* a pair list of 4 (2D) or 8 (3D) pairs per particle (2 ints, and the normal and depth: 4 reals);
+        /* a pair list of 4 (2D) or 8 (3D) pairs per particle (2 ints, and the normal and depth: 4 reals),
+           and a second one to sort it into;
            each particle's cell (dims ints), the particles sorted by bucket (1), by height (1) and their rank
            in that order (1), whether it is supported (1), the particles near a wall (1); the table and the
            height bins (each 2 per particle, a power of two, + 1) */
@@ -2162,7 +2164,7 @@ static int motus__layout_of(const motus_scene *scene, const motus_state *state, 
         l->table_size = 1;
         while (l->table_size < 2 * n && l->table_size < ((size_t)1 << 30)) l->table_size *= 2;
         l->pair_capacity = pairs * n;
-        l->contacts = pairs * 4 * real + ((size_t)dims + 5 + 2 * pairs) * index;
+        l->contacts = 2 * pairs * 4 * real + ((size_t)dims + 5 + 2 * 2 * pairs) * index; /* pair lists: 2 */
     }
     per_particle = l->coupled + l->copy + l->contacts;
     if (n > 0 && per_particle > ((size_t)-1 - 4 * index) / 2 / n) return 0;
@@ -2412,12 +2414,15 @@ typedef struct motus__contact_job {
     motus_real *x[3], *v[3];
     const motus_real *inverse_mass, *radius;
     motus_real uniform_inverse_mass, uniform_radius;
-    motus_real restitution, wall_restitution, threshold, friction;
+    motus_real restitution, wall_restitution, threshold, friction, h;
     motus_real lo[3], hi[3];
     motus_real inverse_cell, scale, inverse_scale; /* cell = 1/inverse_cell; scale: a power of two, radii ~ 1 */
     int *cell[3], *sorted, *table, *order, *rank, *supported, *near_wall, near_walls, shock, up_axis;
     int half[14][3], half_count; /* the own cell, then the cells after it in (up, other axes) order */
     motus_real *geometry, *geometry_out; /* per listed pair: the normal and the depth when it was listed */
+    motus_contact_pair *pairs_sorted;
+    motus_real *geometry_sorted;
+    int *bins;
     motus_real up_sign;
     unsigned mask;
     motus_contact_pair *pairs;
@@ -2429,6 +2434,8 @@ enum { MOTUS__PAIRS_RECORD, MOTUS__PAIRS_VELOCITY, MOTUS__PAIRS_POSITION };
    pass. Impulses act within MOTUS__TOUCH (of the radii's sum) of touching; projections on overlaps only. */
 #define MOTUS__REACH MOTUS_R(1.1)
 #define MOTUS__TOUCH MOTUS_R(0.01)
+#define MOTUS__SUPPORT_PASSES 4
+#define MOTUS__TOUCH_SUPPORT MOTUS_R(0.05) /* a ball in a random pile touches one support and may miss the next by a few % */
 
 static motus_real motus__contact_w(const motus__contact_job *j, int i) {
     return j->inverse_mass ? j->inverse_mass[(ptrdiff_t)i * j->stride] : j->uniform_inverse_mass;
@@ -2461,7 +2468,7 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     const motus_real g[3] = {scene->gravity.x, scene->gravity.y, scene->gravity.z};
     motus_real largest_radius = 0, largest_coordinate = 0, cell, g_max = 0, g_sum = 0;
     motus_real *reals = (motus_real *)(void *)((char *)memory + l->coupled + l->copy);
-    int *ints = (int *)(void *)(reals + 4 * l->pair_capacity);
+    int *ints = (int *)(void *)(reals + 2 * 4 * l->pair_capacity);
     int i, d, count = state->count;
     memset(j, 0, sizeof *j);
     j->dims = dims;
@@ -2485,6 +2492,7 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     /* |g| without squaring g (it may be near the largest real) */
     for (d = 0; d < dims; ++d) g_max = (g[d] < 0 ? -g[d] : g[d]) > g_max ? (g[d] < 0 ? -g[d] : g[d]) : g_max;
     for (d = 0; d < dims && g_max > 0; ++d) g_sum += (g[d] / g_max) * (g[d] / g_max);
+    j->h = h;
     j->threshold = c->restitution_threshold > 0 ? c->restitution_threshold : 4 * (g_max * MOTUS_SQRT(g_sum)) * h;
     /* the grid */
     for (i = 0; i < count; ++i) {
@@ -2502,8 +2510,11 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     j->rank = ints, ints += count;
     j->supported = ints, ints += count;
     j->near_wall = ints, ints += count;
+    j->bins = ints;
     j->pairs = (motus_contact_pair *)(void *)(ints + l->table_size + 1);
+    j->pairs_sorted = j->pairs + l->pair_capacity;
     j->geometry = reals;
+    j->geometry_sorted = reals + 4 * l->pair_capacity;
     j->pair_capacity = l->pair_capacity;
     j->mask = (unsigned)(l->table_size - 1);
     j->grid = largest_radius > 0 && count > 1;
@@ -2613,25 +2624,32 @@ static inline int motus__overlap(const motus__contact_job *j, int a, int b, motu
    tangential stop. Applied to the current velocities (Gauss-Seidel), so a chain (Newton's cradle) passes
    the momentum through in one sweep. Equal and opposite: momentum is kept to rounding; with e <= 1 the
    kinetic energy does not grow. */
-static void motus__pair_velocity(motus__contact_job *j, int a, int b, const motus_real *n) {
+static void motus__pair_velocity(motus__contact_job *j, int a, int b, const motus_real *n, motus_real depth) {
     const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
-    const motus_real wb = motus__contact_w(j, b);
+    const motus_real wb = motus__contact_w(j, b), gap = -depth;
+    const motus_real sum = motus__contact_r(j, a) + motus__contact_r(j, b);
     motus_real wa = motus__contact_w(j, a), w = wa + wb;
-    motus_real vn = 0, target, impulse, t[3] = {0, 0, 0}, t2 = 0, tangential, friction;
-    int d;
+    motus_real vn = 0, target, allowed, impulse, t[3] = {0, 0, 0}, t2 = 0, tangential, friction;
+    int d, fast;
     if (w == 0) return; /* two immovable particles */
+    for (d = 0; d < j->dims; ++d) vn += (j->v[d][pb] - j->v[d][pa]) * n[d];
+    /* A fast approach (faster than the threshold) is a collision once they overlap: it bounces with the
+       approach speed it has then. A slow one is a resting contact: within a few % of touching (a pile's
+       supports), or closing its gap within this substep, it may approach only as fast as closes the gap
+       by the substep's end (a speculative contact: it lands, and nothing hovers). */
+    fast = vn < -j->threshold && !j->shock;
+    if (fast ? !(gap < 0) : (gap > (j->shock ? MOTUS__TOUCH_SUPPORT : MOTUS__TOUCH) * sum && !(gap <= -vn * j->h)))
+        return;
+    allowed = gap > 0 ? -gap / j->h : 0;
     if (j->shock) {
         /* the last sweep: a particle resting on a support (a wall, an immovable particle, or a particle that
-           rests on one) is a support for the one above it (within 60 degrees of up): the impulse moves only
-           the upper one */
-        if (!j->supported[a] || wb == 0 || !(n[j->up_axis] * j->up_sign > MOTUS_R(0.5))) return;
+           rests on one) is a support for the one above it: the impulse moves only the upper one */
+        if (!j->supported[a] || wb == 0 || !(n[j->up_axis] * j->up_sign > 0)) return;
         j->supported[b] = 1;
         wa = 0, w = wb;
     }
-    for (d = 0; d < j->dims; ++d) vn += (j->v[d][pb] - j->v[d][pa]) * n[d];
-    if (!(vn < 0)) return; /* separating or resting */
-    /* the support sweep only stops approaches: the bounces were given by the sweeps before it */
-    target = vn < -j->threshold && !j->shock ? -j->restitution * vn : 0;
+    if (!(vn < allowed)) return; /* separating, or resting */
+    target = fast ? -j->restitution * vn : allowed;
     impulse = (target - vn) / w;
     for (d = 0; d < j->dims; ++d) {
         j->v[d][pa] -= impulse * wa * n[d];
@@ -2658,8 +2676,8 @@ static void motus__pair_velocity(motus__contact_job *j, int a, int b, const motu
    projection, not a velocity (split impulse): it removes the overlap without adding energy. */
 static void motus__pair_position(motus__contact_job *j, int a, int b, const motus_real *n, motus_real depth) {
     const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
-    /* the support sweep: only where b is above a (the normal within 60 degrees of up) */
-    const int carried = j->shock && n[j->up_axis] * j->up_sign > MOTUS_R(0.5);
+    /* the support sweep: only where b is above a */
+    const int carried = j->shock && n[j->up_axis] * j->up_sign > 0;
     const motus_real wb = motus__contact_w(j, b), wa = carried && wb > 0 ? 0 : motus__contact_w(j, a), w = wa + wb;
     int d;
     if (w == 0) return;
@@ -2708,11 +2726,11 @@ static void motus__wall_contacts(motus__contact_job *j, int i, int action) {
     }
 }
 
-/* A near pair in a phase: impulses within MOTUS__TOUCH of touching, projection where they overlap. */
+/* A near pair in a phase: impulses where they touch or will (see motus__pair_velocity), projection where
+   they overlap. */
 static void motus__pair_solve(motus__contact_job *j, int a, int b, int phase, const motus_real *n, motus_real depth) {
     if (phase == MOTUS__PAIRS_VELOCITY) {
-        const motus_real gap_allowed = (motus__contact_r(j, a) + motus__contact_r(j, b)) * MOTUS__TOUCH;
-        if (-depth <= gap_allowed) motus__pair_velocity(j, a, b, n);
+        motus__pair_velocity(j, a, b, n, depth);
     } else if (depth > 0) {
         motus__pair_position(j, a, b, n, depth);
     }
@@ -2763,6 +2781,27 @@ static size_t motus__pairs_of(motus__contact_job *j, int i, int action, motus_re
     return found;
 }
 
+/* The list in the order of its upper particles (a counting sort, stable): each particle's supports come
+   together, and after the supports of its supports, so one support sweep carries a pile from the floor
+   up. */
+static void motus__sort_pairs(motus__contact_job *j) {
+    int *start = j->bins, i;
+    size_t k;
+    motus_contact_pair *swap_pairs;
+    motus_real *swap_geometry;
+    for (i = 0; i <= j->count; ++i) start[i] = 0;
+    for (k = 0; k < j->pair_count; ++k) ++start[j->rank[j->pairs[k].b] + 1];
+    for (i = 0; i < j->count; ++i) start[i + 1] += start[i];
+    for (k = 0; k < j->pair_count; ++k) {
+        const size_t to = (size_t)start[j->rank[j->pairs[k].b]]++;
+        int d;
+        j->pairs_sorted[to] = j->pairs[k];
+        for (d = 0; d < 4; ++d) j->geometry_sorted[4 * to + (size_t)d] = j->geometry[4 * k + (size_t)d];
+    }
+    swap_pairs = j->pairs, j->pairs = j->pairs_sorted, j->pairs_sorted = swap_pairs;
+    swap_geometry = j->geometry, j->geometry = j->geometry_sorted, j->geometry_sorted = swap_geometry;
+}
+
 /* One contact pass after a substep of h: the pairs recorded (as many particles' worth as the list holds;
    the rest are searched again at each sweep, in the same order), then `iterations` sweeps of velocity
    impulses over the pairs and walls, then as many of position projection. */
@@ -2770,7 +2809,7 @@ static motus_result motus__contacts_pass(const motus_scene *scene, const motus_s
                                          void *memory, const motus__layout *l) {
     motus__contact_job job, *j = &job;
     int i, d, sweep, phase;
-    size_t k;
+    size_t k, end;
     motus__contact_job_init(j, scene, state, dims, h, memory, l);
     j->listed = 0;
     if (j->grid) {
@@ -2783,6 +2822,7 @@ static motus_result motus__contacts_pass(const motus_scene *scene, const motus_s
             j->pair_count += found;
             j->listed = (int)k + 1;
         }
+        if (j->listed == j->count) motus__sort_pairs(j);
     }
     /* Velocities: the walls first (a pile's floor stops its bottom row before the rows above meet it).
        Positions: the walls last (nothing leaves the box). Each phase ends with one more sweep that carries
@@ -2797,17 +2837,24 @@ static motus_result motus__contacts_pass(const motus_scene *scene, const motus_s
                 j->supported[i] = motus__contact_w(j, i) == 0;
             for (i = 0; (phase == MOTUS__PAIRS_VELOCITY || j->shock) && i < j->near_walls; ++i)
                 motus__wall_contacts(j, j->near_wall[i], phase);
-            for (k = 0; k < j->pair_count; ++k) {
-                motus_real n[3], depth;
-                const int a = j->pairs[k].a, b = j->pairs[k].b;
-                if (phase == MOTUS__PAIRS_VELOCITY) {
-                    /* positions do not move in this phase: the normal and depth of the listing hold */
-                    const motus_real *g = j->geometry + 4 * k;
-                    n[0] = g[0], n[1] = g[1], n[2] = g[2];
-                    motus__pair_solve(j, a, b, phase, n, g[3]);
-                } else if (motus__overlap(j, a, b, MOTUS__REACH, n, &depth)) {
-                    motus__pair_solve(j, a, b, phase, n, depth);
-                }
+            for (k = 0; k < j->pair_count; k = end) {
+                size_t m;
+                int local;
+                /* the support sweep: a particle's supports together, a few times (a ball in a V of two) */
+                for (end = k + 1; j->shock && end < j->pair_count && j->pairs[end].b == j->pairs[k].b;) ++end;
+                for (local = 0; local < (j->shock && end > k + 1 ? MOTUS__SUPPORT_PASSES : 1); ++local)
+                    for (m = k; m < end; ++m) {
+                        motus_real n[3], depth;
+                        const int a = j->pairs[m].a, b = j->pairs[m].b;
+                        if (phase == MOTUS__PAIRS_VELOCITY) {
+                            /* positions do not move in this phase: the normal and depth of the listing hold */
+                            const motus_real *g = j->geometry + 4 * m;
+                            n[0] = g[0], n[1] = g[1], n[2] = g[2];
+                            motus__pair_solve(j, a, b, phase, n, g[3]);
+                        } else if (motus__overlap(j, a, b, MOTUS__REACH, n, &depth)) {
+                            motus__pair_solve(j, a, b, phase, n, depth);
+                        }
+                    }
             }
             for (i = j->listed; j->grid && i < j->count; ++i)
                 (void)motus__pairs_of(j, j->order[i], phase, MOTUS__REACH, NULL, 0);

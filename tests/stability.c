@@ -13,9 +13,11 @@
 
 #ifdef MOTUS_DOUBLE
 #define REAL_MAX DBL_MAX
+#define REAL_MIN_POSITIVE (DBL_MIN * DBL_EPSILON)
 #define REAL_MIN DBL_MIN
 #else
 #define REAL_MAX FLT_MAX
+#define REAL_MIN_POSITIVE (FLT_MIN * FLT_EPSILON)
 #define REAL_MIN FLT_MIN
 #endif
 #define EPS ((double)MOTUS_REAL_EPSILON)
@@ -285,6 +287,14 @@ TEST(max_stable_dt_rejects_bad_input) {
     ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_RK4, 1, infinity(), &dt), MOTUS_ERROR_NOT_FINITE);
     ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_RK4, 1, 1, NULL), MOTUS_ERROR_NULL_POINTER);
     ENSURE(dt == 42); /* untouched */
+    /* explicit Euler and midpoint are unstable at any dt: 0, also where sqrt(m)/sqrt(k) overflows (found by
+       the fuzzer: 0 * Inf was NaN); the stable methods then say +Inf */
+    ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_EXPLICIT_EULER, REAL_MIN_POSITIVE, REAL_MAX, &dt), MOTUS_OK);
+    ENSURE(dt == 0);
+    ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_MIDPOINT, REAL_MIN_POSITIVE, REAL_MAX, &dt), MOTUS_OK);
+    ENSURE(dt == 0);
+    ENSURE_EQ_INT(motus_max_stable_dt(MOTUS_RK4, REAL_MIN_POSITIVE, REAL_MAX, &dt), MOTUS_OK);
+    ENSURE(dt > 0 && !motus_real_is_finite(dt));
 }
 
 /* The fewest n with dt/n < safety*max_dt, in motus_real as the substepped step computes it. */
