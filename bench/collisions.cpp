@@ -1,7 +1,7 @@
 // collisions.cpp - bench/collisions (issue 12, item 8): balls in a box, motus against what a game programmer
 // would pick instead, in the same run and the same scene.
 //   collisions [--out DIR] [--quick] [--sizes N,N,...] [--engines a,b,...] [--dims 2,3] [--scenes drop,pile]
-//              [--cap S] [--run-cap S]
+//              [--cap S] [--run-cap S] [--run-limit S]
 // Scenes (collisions.h: every engine gets the same start, as doubles):
 //   drop  N balls of radius r = 0.5 m on a jittered grid of spacing 2.2 r above the floor of a box open at the
 //         top, each with a random velocity in [-1, 1] m/s per component (the same seed for every engine), fall
@@ -19,15 +19,20 @@
 // kinetic energy / initial potential energy (above the resting height r) after the last frame.
 // A peer is skipped at a size where one step takes more than --cap seconds (2): predicted linearly from the size
 // below, or measured (the median of its steps after the first past one cap, or one step past two; the first,
-// which finds every pair from scratch, may take 5); motus runs at every
-// size, and where a step takes more than 10 caps it stops there and reports the steps it made. A run stops early after --run-cap seconds (40) of stepping.
+// which finds every pair from scratch, may take 5). motus runs at every size; where its steps take more than
+// 10 caps it stops there and reports the steps it made. A run stops early after --run-cap seconds (40) of
+// stepping. Each run is a child process, killed (and reported skipped) after --run-limit seconds (150): a step
+// that does not end costs that run only.
 // --quick: N = 300 and 2000, a few frames: a smoke run in seconds (ctest bench.collisions_quick_run).
 // Writes DIR/collisions.csv, DIR/collisions.md (also printed on stdout), DIR/plot/*.dat and DIR/plot/info.gp
 // for bench/plot_collisions.gp; progress goes to stderr. scripts/collisions.sh runs it and draws the figure.
 #include "collisions.h"
 
+#include <poll.h>
+#include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -52,7 +57,7 @@ struct options {
     std::vector<int> sizes;
     std::vector<std::string> engines, scenes = {"drop", "pile"};
     std::vector<int> dims = {2, 3};
-    double cap = 2.0, run_cap = 40.0;
+    double cap = 2.0, run_cap = 40.0, run_limit = 150.0;
 };
 
 struct frames {
@@ -372,6 +377,80 @@ row run(const cb_engine &e, const start &st, const std::string &scene, const opt
     return out;
 }
 
+// Each run in a child process: a step that never returns (a blown-up pile can put every ball in one cell) or
+// a crash costs that run only. The child sends the row back through a pipe; past `limit` seconds it is killed.
+row run_isolated(const cb_engine &e, const start &st, const std::string &scene, const options &o, const row *smaller,
+                 double limit) {
+    row out;
+    out.engine = e.name;
+    out.scene = scene;
+    out.dims = st.scene.dims;
+    out.n = st.scene.n;
+    int fds[2];
+    if (pipe(fds) != 0) return run(e, st, scene, o, smaller);
+    std::fflush(nullptr);
+    const pid_t child = fork();
+    if (child < 0) {
+        close(fds[0]);
+        close(fds[1]);
+        return run(e, st, scene, o, smaller);
+    }
+    if (child == 0) {
+        close(fds[0]);
+        const row r = run(e, st, scene, o, smaller);
+        char text[1024];
+        const int length = std::snprintf(text, sizeof text, "%.17g\n%.17g\n%.17g\n%s", r.ms, r.overlap, r.ke,
+                                         r.note.c_str());
+        ssize_t written = 0;
+        while (written < length) {
+            const ssize_t w = write(fds[1], text + written, (size_t)(length - written));
+            if (w <= 0) break;
+            written += w;
+        }
+        close(fds[1]);
+        _exit(0);
+    }
+    close(fds[1]);
+    std::string text;
+    const double deadline = now() + limit;
+    bool killed = false;
+    for (;;) {
+        const double left = deadline - now();
+        if (left <= 0) {
+            kill(child, SIGKILL);
+            killed = true;
+            break;
+        }
+        struct pollfd p = {fds[0], POLLIN, 0};
+        const int ready = poll(&p, 1, (int)std::min(left * 1000 + 1, 1000.0));
+        if (ready < 0 && errno != EINTR) break;
+        if (ready <= 0) continue;
+        char buffer[512];
+        const ssize_t got = read(fds[0], buffer, sizeof buffer);
+        if (got <= 0) break;
+        text.append(buffer, (size_t)got);
+    }
+    close(fds[0]);
+    int status = 0;
+    waitpid(child, &status, 0);
+    if (killed) {
+        out.note = "skipped: killed after " + fmt("%.0f", limit) + " s (a step that did not end)";
+        return out;
+    }
+    std::istringstream in(text);
+    std::string ms, overlap, ke;
+    if (!std::getline(in, ms) || !std::getline(in, overlap) || !std::getline(in, ke)) {
+        out.note = "failed: the run ended without a result (" +
+                   (WIFSIGNALED(status) ? "signal " + std::to_string(WTERMSIG(status)) : std::string("no output")) + ")";
+        return out;
+    }
+    out.ms = std::strtod(ms.c_str(), nullptr);
+    out.overlap = std::strtod(overlap.c_str(), nullptr);
+    out.ke = std::strtod(ke.c_str(), nullptr);
+    std::getline(in, out.note, '\0');
+    return out;
+}
+
 // ---- machine -----------------------------------------------------------------------------------------------
 struct cpu_use {
     double machine = NAN, self = NAN;
@@ -383,9 +462,12 @@ cpu_use cpu_now() {
     unsigned long long user, nice, system, idle, iowait, irq, softirq, steal;
     if (stat >> cpu >> user >> nice >> system >> idle >> iowait >> irq >> softirq >> steal && cpu == "cpu")
         c.machine = (double)(user + nice + system + irq + softirq + steal) / (double)sysconf(_SC_CLK_TCK);
-    struct rusage u;
-    if (getrusage(RUSAGE_SELF, &u) == 0)
-        c.self = u.ru_utime.tv_sec + 1e-6 * u.ru_utime.tv_usec + u.ru_stime.tv_sec + 1e-6 * u.ru_stime.tv_usec;
+    // this process and its runs (each run is a child process, counted once it has been waited for)
+    struct rusage u, children;
+    if (getrusage(RUSAGE_SELF, &u) == 0 && getrusage(RUSAGE_CHILDREN, &children) == 0)
+        c.self = u.ru_utime.tv_sec + 1e-6 * u.ru_utime.tv_usec + u.ru_stime.tv_sec + 1e-6 * u.ru_stime.tv_usec +
+                 children.ru_utime.tv_sec + 1e-6 * children.ru_utime.tv_usec + children.ru_stime.tv_sec +
+                 1e-6 * children.ru_stime.tv_usec;
     return c;
 }
 std::string first_line(const char *path) {
@@ -554,7 +636,7 @@ std::vector<std::string> split(const std::string &s) {
 
 int usage() {
     std::fprintf(stderr, "usage: collisions [--out DIR] [--quick] [--sizes N,N,...] [--engines a,b,...] [--dims 2,3] "
-                         "[--scenes drop,pile] [--cap S] [--run-cap S]\n");
+                         "[--scenes drop,pile] [--cap S] [--run-cap S] [--run-limit S]\n");
     return 2;
 }
 
@@ -577,6 +659,7 @@ int main(int argc, char **argv) {
         }
         else if (a == "--cap" && has_value) o.cap = std::atof(argv[++i]);
         else if (a == "--run-cap" && has_value) o.run_cap = std::atof(argv[++i]);
+        else if (a == "--run-limit" && has_value) o.run_limit = std::atof(argv[++i]);
         else return usage();
     }
     if (o.sizes.empty()) o.sizes = o.quick ? std::vector<int>{300, 2000} : std::vector<int>{1000, 10000, 100000, 1000000};
@@ -630,7 +713,7 @@ int main(int argc, char **argv) {
                     const row *smaller = nullptr;
                     for (const row &r : rows)
                         if (r.engine == e->name && r.dims == dims && r.scene == scene) smaller = &r;
-                    rows.push_back(run(*e, st, scene, o, smaller));
+                    rows.push_back(run_isolated(*e, st, scene, o, smaller, o.run_limit));
                     const row &r = rows.back();
                     std::fprintf(stderr, "collisions: %dD %-4s N = %-7d %-8s %10s ms/step  overlap %-8s  KE/PE0 %-9s %s\n",
                                  dims, scene, n, e->name, cell_ms(r).c_str(),
