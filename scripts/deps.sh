@@ -9,8 +9,9 @@ demo=(cmake make gcc pkg-config python3 libx11-dev libgl1-mesa-dri libglx-mesa0 
 # The tests also build the benchmarks (to keep them compiling) and run them once in their quick mode.
 # scripts/check-tools.sh (run by scripts/test.sh): valgrind, and clang's sanitizer and libFuzzer runtimes.
 test=("${demo[@]}" g++ clang tcc libosmesa6-dev libstb-dev xdotool libboost-dev libgsl-dev gnuplot-nox
-      valgrind libclang-rt-14-dev)
-bench=(cmake make gcc g++ pkg-config libboost-dev libgsl-dev gnuplot-nox)
+      valgrind libclang-rt-14-dev libbox2d-dev libchipmunk-dev libbullet-dev)
+# bench/collisions' peers: Box2D 2.4, Chipmunk 7, Bullet.
+bench=(cmake make gcc g++ pkg-config libboost-dev libgsl-dev gnuplot-nox libbox2d-dev libchipmunk-dev libbullet-dev)
 
 case "${1:-test}" in
     demo) wanted=("${demo[@]}") ;;
