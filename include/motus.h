@@ -2642,12 +2642,12 @@ static void motus__pair_velocity(motus__contact_job *j, int a, int b, const motu
     int d, fast;
     if (w == 0) return; /* two immovable particles */
     for (d = 0; d < j->dims; ++d) vn += (j->v[d][pb] - j->v[d][pa]) * n[d];
-    /* A fast approach (faster than the threshold) is a collision once they overlap: it bounces with the
-       approach speed it has then. A slow one is a resting contact: within a few % of touching (a pile's
+    /* A fast approach (faster than the threshold) is a collision once they touch or overlap: it bounces with
+       the approach speed it has then. A slow one is a resting contact: within a few % of touching (a pile's
        supports), or closing its gap within this substep, it may approach only as fast as closes the gap
        by the substep's end (a speculative contact: it lands, and nothing hovers). */
     fast = vn < -j->threshold && !j->shock;
-    if (fast ? !(gap < 0) : (gap > (j->shock ? MOTUS__TOUCH_SUPPORT : MOTUS__TOUCH) * sum && !(gap <= -vn * j->h)))
+    if (fast ? !(gap <= 0) : (gap > (j->shock ? MOTUS__TOUCH_SUPPORT : MOTUS__TOUCH) * sum && !(gap <= -vn * j->h)))
         return;
     allowed = gap > 0 ? -gap / j->h : 0;
     if (j->shock) {

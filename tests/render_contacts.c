@@ -11,8 +11,8 @@
    is uniform before the contact time t_c = gap0/(u1 - u2) and uniform at v1', v2' from the touching
    positions after it.
 
-   The discrete step resolves the contact at the end of the first frame n whose gap is within 1% of the
-   radii's sum (the solver's reach for impulses): the velocities become v1', v2' and an overlap delta is
+   The discrete step resolves the contact at the end of the first frame n at which the balls touch or overlap
+   (an approach faster than the restitution threshold, here 0: a collision): the velocities become v1', v2' and an overlap delta is
    projected out, half to each ball; the motion after it is uniform again. Its position differs from the
    continuous one by e*(u1 - u2)/2*(n*h - t_c) after the contact (derived in check_collision), so:
    - when the gap closes exactly at a frame (n*h = t_c) the discrete and continuous forms agree, and the
@@ -92,7 +92,7 @@ typedef struct collision {
 /* What the closed forms say at frame n: the coordinate along the line, continuous and discrete. */
 typedef struct closed_form {
     double contact_time; /* t_c = gap0 / (u1 - u2) */
-    int contact_frame;   /* the first frame whose gap is within 1% of the radii's sum */
+    int contact_frame;   /* the first frame at which the balls touch or overlap */
     double overlap;      /* projected out at that frame, half to each ball */
     double v[2];         /* after the contact */
 } closed_form;
@@ -102,7 +102,7 @@ static closed_form closed_form_of(const collision *c) {
     const double gap0 = c->s0[1] - c->s0[0] - 2 * RADIUS, approach = c->u[0] - c->u[1];
     int n;
     f.contact_time = gap0 / approach;
-    for (n = 0; gap0 - approach * n * H > 0.01 * 2 * RADIUS; ++n) continue;
+    for (n = 0; gap0 - approach * n * H > 0; ++n) continue;
     f.contact_frame = n;
     f.overlap = approach * n * H - gap0 > 0 ? approach * n * H - gap0 : 0;
     f.v[0] = (1 - c->e) / 2 * c->u[0] + (1 + c->e) / 2 * c->u[1];
@@ -182,7 +182,7 @@ static void check_collision(const collision *c) {
             ENSURE_NEAR((centroid[n][0][1] + centroid[n][1][1]) / 2, c->centre_y + mid * c->ny, PIXEL_TOLERANCE);
         }
     }
-    /* the balls touch (within the solver's reach) at the contact frame, and the discs do not overlap after it */
+    /* the balls touch at the contact frame, and the discs do not overlap after it */
     ENSURE(f.contact_frame > 20 && f.contact_frame + 40 < FRAMES);
 
     /* Speeds read off the pixels: before the contact from frames 0 and contact-20, after it from contact+20 and
