@@ -2925,14 +2925,13 @@ static motus_result motus__step_substeps(const motus_scene *scene, const motus_s
 }
 
 /* The radii, before anything is written (a contact pass reads them at every substep). */
-static motus_result motus__radii_check(const motus_scene *scene, const motus_state *state) {
+static motus_result motus__radii_check(const motus_state *state) {
     const ptrdiff_t stride = state->stride == 0 ? 1 : state->stride;
     int i;
     for (i = 0; i < state->count && state->radius; ++i) {
         const motus_real r = state->radius[(ptrdiff_t)i * stride];
         if (!motus__radius_valid(r)) return motus_real_is_finite(r) ? MOTUS_ERROR_INVALID_CONTACTS : MOTUS_ERROR_NOT_FINITE;
     }
-    (void)scene;
     return MOTUS_OK;
 }
 
@@ -2958,7 +2957,7 @@ MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *s
         return MOTUS_ERROR_SCRATCH_TOO_SMALL;
     if (count == 0) return MOTUS_OK;
     if (scene->contacts.enabled) {
-        result = motus__radii_check(scene, state);
+        result = motus__radii_check(state);
         if (result != MOTUS_OK) return result;
     }
     if (dt == 0) return motus_state_check(scene, state, 0, count, NULL);
@@ -3024,10 +3023,7 @@ MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus
         if (!motus__layout_of(&colliding, state, &layout) || scratch_bytes < layout.total ||
             (!scratch && state->count > 0) || (uintptr_t)scratch % offsetof(motus__align_probe, r) != 0)
             return MOTUS_ERROR_SCRATCH_TOO_SMALL;
-        result = motus__radii_check(&colliding, state);
-        if (result != MOTUS_OK) return result;
-        colliding.contacts.enabled = 1;
-        result = motus_state_check(&colliding, state, 0, state->count, NULL);
+        result = motus_state_check(&colliding, state, 0, state->count, NULL); /* the radii too */
         if (result != MOTUS_OK) return result;
         motus__contact_job_init(&job, &colliding, state, dims, 0, scratch, &layout);
     }
