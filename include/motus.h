@@ -1256,6 +1256,17 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
 #define MOTUS__ENGINE_PRAGMA_GCC
 #endif
 #endif
+/* GCC 12 stops with an internal compiler error in its partial redundancy elimination (-ftree-partial-pre,
+   on at -O3) on the selects of double lanes when the target lacks SSE4.1's 64-bit compares (plain x86-64):
+   that one pass is off for the engine there, so that double runs in vector lanes at every -O level (one
+   particle at a time it took 2.7x float's time at -O2). */
+#if defined(MOTUS_DOUBLE) && defined(__GNUC__) && !defined(__clang__) && defined(__SSE2__) && !defined(__SSE4_1__)
+#ifndef MOTUS__ENGINE_PRAGMA_GCC
+#pragma GCC push_options
+#define MOTUS__ENGINE_PRAGMA_GCC
+#endif
+#pragma GCC optimize("no-tree-partial-pre")
+#endif
 
 #include <limits.h> /* INT_MAX */
 
@@ -1288,16 +1299,7 @@ extern "C" {
 #define MOTUS_SIMD_BYTES 16
 #endif
 #endif
-/* GCC 12 stops with an internal compiler error on some selects of double lanes when the target lacks
-   SSE4.1's 64-bit compares (plain x86-64): there double steps one particle at a time (the same bits). */
-#if defined(MOTUS_DOUBLE) && defined(__GNUC__) && !defined(__clang__) && defined(__SSE2__) && !defined(__SSE4_1__) && \
-    !defined(MOTUS_NO_SIMD)
-#define MOTUS__DOUBLE_LANES_UNSAFE 1
-#else
-#define MOTUS__DOUBLE_LANES_UNSAFE 0
-#endif
-#if (defined(__GNUC__) || defined(__clang__)) && !defined(MOTUS_NO_SIMD) && MOTUS_SIMD_BYTES > 0 && \
-    !MOTUS__DOUBLE_LANES_UNSAFE
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(MOTUS_NO_SIMD) && MOTUS_SIMD_BYTES > 0
 #define MOTUS__VECTOR 1
 #ifdef MOTUS_DOUBLE
 typedef int64_t motus__mask __attribute__((vector_size(MOTUS_SIMD_BYTES)));
@@ -1307,6 +1309,11 @@ typedef int32_t motus__mask __attribute__((vector_size(MOTUS_SIMD_BYTES)));
 typedef motus_real motus__lane __attribute__((vector_size(MOTUS_SIMD_BYTES)));
 typedef motus_real motus__lane_unaligned __attribute__((vector_size(MOTUS_SIMD_BYTES), aligned(sizeof(motus_real))));
 #define MOTUS__LANES ((int)(MOTUS_SIMD_BYTES / sizeof(motus_real)))
+#ifdef MOTUS_DOUBLE /* the same, for #if */
+#define MOTUS__LANES_PP (MOTUS_SIMD_BYTES / 8)
+#else
+#define MOTUS__LANES_PP (MOTUS_SIMD_BYTES / 4)
+#endif
 /* The hardware's vector square root, correctly rounded like sqrtf/sqrt. Through the compilers' builtins
    (GCC and Clang name them alike) rather than <immintrin.h>, which takes longer to parse than the engine
    to compile at 16 and 32 bytes; AVX-512 builds include the header. */
@@ -1348,11 +1355,27 @@ MOTUS__KI motus__lane motus__splat(motus_real value) {
    sit). */
 MOTUS__KI motus__lane motus__load(const motus_real *from, ptrdiff_t stride, int n) {
 #if MOTUS__VECTOR
-    motus__lane lanes = motus__splat(0);
-    int l;
     if (stride == 1 && n == MOTUS__LANES) return *(const motus__lane_unaligned *)from;
-    for (l = 0; l < MOTUS__LANES; ++l) lanes[l] = from[(l < n ? l : n - 1) * stride];
-    return lanes;
+    {
+        /* Built from its values, not lane by lane: lane stores go through memory at -O2, and the vector
+           read back after four (or more) small stores waits for them (a store-forwarding stall that made a
+           strided step over motus_particle structs 4x slower). */
+#define MOTUS__AT(l) from[(ptrdiff_t)((l) < n ? (l) : n - 1) * stride]
+#if MOTUS__LANES_PP == 2
+        const motus__lane lanes = {MOTUS__AT(0), MOTUS__AT(1)};
+#elif MOTUS__LANES_PP == 4
+        const motus__lane lanes = {MOTUS__AT(0), MOTUS__AT(1), MOTUS__AT(2), MOTUS__AT(3)};
+#elif MOTUS__LANES_PP == 8
+        const motus__lane lanes = {MOTUS__AT(0), MOTUS__AT(1), MOTUS__AT(2), MOTUS__AT(3),
+                                   MOTUS__AT(4), MOTUS__AT(5), MOTUS__AT(6), MOTUS__AT(7)};
+#else
+        motus__lane lanes = motus__splat(0);
+        int l;
+        for (l = 0; l < MOTUS__LANES; ++l) lanes[l] = MOTUS__AT(l);
+#endif
+#undef MOTUS__AT
+        return lanes;
+    }
 #else
     (void)n;
     (void)stride;
@@ -1396,6 +1419,16 @@ MOTUS__KI motus__lane motus__select(motus__mask mask, motus__lane a, motus__lane
     return result;
 #else
     return mask ? a : b;
+#endif
+}
+/* Whether any lane of the mask is set. */
+MOTUS__KI int motus__any(motus__mask mask) {
+#if MOTUS__VECTOR
+    int l, any = 0;
+    for (l = 0; l < MOTUS__LANES; ++l) any |= mask[l] != 0;
+    return any;
+#else
+    return mask != 0;
 #endif
 }
 /* A lane mask as reals: -1 (vectors) or 1 (scalars) where set, 0 where not. */
@@ -1445,7 +1478,10 @@ enum {
    - MOTUS__SHAPE_ALL, the fast kernel for any scene: the same, over plain arrays, without coupling;
    - a set of terms (gravity alone, with damping, with linear drag): a fast kernel for exactly that scene,
      with nothing tested at run time and no work for what it lacks. These are the common scenes; they give
-     the bits the others give (g is stored as g + 0, so a = g here is (0 + g) - v*0 there, exactly).
+     the bits the others give (g is stored as g + 0, so a = g here is (0 + g) - v*0 there, exactly). Not
+     even a test for walls: a call in the loop, taken or not, costs these kernels 5% in float and 60% in
+     double at -O2 (every vector register is the caller's to save), so scenes with walls run the kernel for
+     any scene, whose walls skip the groups that reach none.
    Terms tested at run time cost a predictable branch per group of particles; gravity and drag computed at
    0 cost two operations. */
 #define MOTUS__SHAPE_ANY 0x80000000u
@@ -1724,29 +1760,39 @@ MOTUS__KI int motus__exact_linear_drag(MOTUS__METHOD_ARGS) {
     return 0;
 }
 
-/* The walls: past one, the position is mirrored back inside and that velocity component multiplied by
-   -restitution; a particle that overshot by more than the box is clamped to the wall (as
+/* The walls of axis d: past one, the position is mirrored back inside and that velocity component multiplied
+   by -restitution; a particle that overshot by more than the box is clamped to the wall (as
    motus_particle_bounce). Only where the position is finite: an overflow must stay visible to the check. */
+MOTUS__KI void motus__walls_axis(const motus__job *j, motus__lane *x_in, motus__lane *v_in, int d) {
+    const motus__lane lo = j->bounds_min[d], hi = j->bounds_max[d];
+    motus__lane x = *x_in, v = *v_in, mirrored;
+    const motus__mask finite = (motus__mask)(x >= motus__splat(-MOTUS__REAL_MAX)) &
+                               (motus__mask)(x <= motus__splat(MOTUS__REAL_MAX));
+    motus__mask below = x < lo, above;
+    mirrored = lo + (lo - x);
+    mirrored = motus__select(mirrored <= j->largest, mirrored, lo); /* the mirror overflowed */
+    x = motus__select(below, mirrored, x);
+    v = motus__select(below, v * j->bounce, v);
+    above = x > hi;
+    mirrored = hi - (x - hi);
+    mirrored = motus__select(mirrored >= -j->largest, mirrored, hi);
+    x = motus__select(above, mirrored, x);
+    v = motus__select(above, v * j->bounce, v);
+    x = motus__select((x < lo) & finite, lo, x);
+    x = motus__select((x > hi) & finite, hi, x);
+    *x_in = x;
+    *v_in = v;
+}
+/* The walls of every axis. An axis's walls change nothing unless a lane is past one of them (a NaN is past
+   none): most groups of most steps pay two compares an axis, and a pile on the floor pays for the floor
+   only. Out of line, as the costly terms: a call per group is small next to a dozen selects an axis, and
+   it keeps every kernel small enough to compile fast. */
 MOTUS__KI void motus__walls(const motus__job *j, motus__lane *x, motus__lane *v, const int dims) {
     MOTUS__EACH_D(
-        const motus__mask finite = (motus__mask)(x[d] >= motus__splat(-MOTUS__REAL_MAX)) &
-                                   (motus__mask)(x[d] <= motus__splat(MOTUS__REAL_MAX));
-        motus__mask below = x[d] < j->bounds_min[d], above;
-        motus__lane mirrored = j->bounds_min[d] + (j->bounds_min[d] - x[d]);
-        mirrored = motus__select(mirrored <= j->largest, mirrored, j->bounds_min[d]); /* the mirror overflowed */
-        x[d] = motus__select(below, mirrored, x[d]);
-        v[d] = motus__select(below, v[d] * j->bounce, v[d]);
-        above = x[d] > j->bounds_max[d];
-        mirrored = j->bounds_max[d] - (x[d] - j->bounds_max[d]);
-        mirrored = motus__select(mirrored >= -j->largest, mirrored, j->bounds_max[d]);
-        x[d] = motus__select(above, mirrored, x[d]);
-        v[d] = motus__select(above, v[d] * j->bounce, v[d]);
-        x[d] = motus__select((x[d] < j->bounds_min[d]) & finite, j->bounds_min[d], x[d]);
-        x[d] = motus__select((x[d] > j->bounds_max[d]) & finite, j->bounds_max[d], x[d]);
+        if (motus__any((motus__mask)(x[d] < j->bounds_min[d]) | (motus__mask)(x[d] > j->bounds_max[d])))
+            motus__walls_axis(j, &x[d], &v[d], d);
     );
 }
-
-/* Out of line, as the costly terms: walls are a dozen selects per component, a call per group is small. */
 static MOTUS__NOINLINE void motus__walls_2(const motus__job *j, motus__lane *x, motus__lane *v) { motus__walls(j, x, v, 2); }
 static MOTUS__NOINLINE void motus__walls_3(const motus__job *j, motus__lane *x, motus__lane *v) { motus__walls(j, x, v, 3); }
 
