@@ -72,7 +72,8 @@ const char *const method_names[] = {"motus", "hand", "general", "textbook", "mot
                                     "rmw_threads", "odeint_symplectic_euler", "odeint_velocity_verlet",
                                     "odeint_runge_kutta4", "textbook_hand", "motus_explicit_euler",
                                     "motus_position_verlet", "motus_velocity_verlet", "motus_leapfrog",
-                                    "motus_midpoint", "motus_rk4", "motus_forest_ruth", "motus_exact_linear_drag"};
+                                    "motus_midpoint", "motus_rk4", "motus_forest_ruth", "motus_exact_linear_drag",
+                                    "textbook_engine"};
 const char *const method_titles[] = {"motus semi_implicit_euler", "hand-written loop (semi-implicit Euler)",
                                      "motus semi_implicit_euler + walls nobody reaches",
                                      "textbook path: motus_particle_* per particle", "motus, 2 threads (step_range)",
@@ -82,7 +83,8 @@ const char *const method_titles[] = {"motus semi_implicit_euler", "hand-written 
                                      "textbook path written by hand (same structs, same math)",
                                      "motus explicit_euler", "motus position_verlet", "motus velocity_verlet",
                                      "motus leapfrog", "motus midpoint", "motus rk4", "motus forest_ruth",
-                                     "motus exact_linear_drag"};
+                                     "motus exact_linear_drag",
+                                     "motus_step over the same structs (motus_state_of_particles)"};
 const int reset_every = 600; // steps
 
 int method_threads(int method) {
@@ -92,12 +94,13 @@ bool is_odeint(int method) {
     return method == THROUGHPUT_ODEINT_SYMPLECTIC_EULER || method == THROUGHPUT_ODEINT_VELOCITY_VERLET ||
            method == THROUGHPUT_ODEINT_RUNGE_KUTTA4;
 }
-bool is_textbook(int method) { return method == THROUGHPUT_TEXTBOOK || method == THROUGHPUT_TEXTBOOK_HAND; }
+bool is_textbook(int method) { return throughput_on_structs(method) != 0; }
 // Which arrays a method works on: methods of one layout take turns on one state.
 int method_layout(int method) {
     switch (method) {
     case THROUGHPUT_TEXTBOOK:
-    case THROUGHPUT_TEXTBOOK_HAND: return 1;
+    case THROUGHPUT_TEXTBOOK_HAND:
+    case THROUGHPUT_TEXTBOOK_ENGINE: return 1;
     case THROUGHPUT_COPY:
     case THROUGHPUT_TRIAD: return 2;
     case THROUGHPUT_ODEINT_SYMPLECTIC_EULER: return 3;
@@ -331,6 +334,7 @@ std::vector<group> groups() {
         if (scene == THROUGHPUT_GRAVITY_DAMPING) {
             g.push_back({scene, THROUGHPUT_TEXTBOOK});
             g.push_back({scene, THROUGHPUT_TEXTBOOK_HAND});
+            g.push_back({scene, THROUGHPUT_TEXTBOOK_ENGINE});
             g.push_back({scene, THROUGHPUT_MOTUS_THREADS});
             for (int method : {THROUGHPUT_RMW, THROUGHPUT_RMW_THREADS, THROUGHPUT_COPY, THROUGHPUT_TRIAD})
                 g.push_back({THROUGHPUT_MEMORY, method}); // rmw adds 0 to the gravity + damping state
@@ -482,7 +486,7 @@ std::vector<check_row> verify() {
                 w.reset(scene, base);
                 const int error = w.run(scene, base, steps);
                 for (int i = 0; i < n; ++i) w.read(scene, base, i, &reference[2 * dims * (size_t)i]);
-                const std::vector<int> others = textbook ? std::vector<int>{THROUGHPUT_TEXTBOOK}
+                const std::vector<int> others = textbook ? std::vector<int>{THROUGHPUT_TEXTBOOK, THROUGHPUT_TEXTBOOK_ENGINE}
                                                          : std::vector<int>{THROUGHPUT_HAND, THROUGHPUT_GENERAL,
                                                                             THROUGHPUT_MOTUS_THREADS};
                 for (int method : others) {
@@ -765,11 +769,18 @@ void report_targets(std::ostream &md, const results &res) {
                 const double vs_motus = res.ratio(build, dims, precision, THROUGHPUT_GRAVITY_DAMPING,
                                                   THROUGHPUT_TEXTBOOK, THROUGHPUT_GRAVITY_DAMPING, THROUGHPUT_MOTUS,
                                                   textbook_n);
+                const double engine = res.ratio(build, dims, precision, THROUGHPUT_GRAVITY_DAMPING,
+                                                THROUGHPUT_TEXTBOOK_ENGINE, THROUGHPUT_GRAVITY_DAMPING,
+                                                THROUGHPUT_TEXTBOOK_HAND, textbook_n);
                 targets.push_back({"textbook path (motus_particle_clear_forces, _add_force, _step, _damp_per_step, "
                                    "_bounce) / plain loop, N = 5000, " + config_name(dims, precision) + ", " +
                                        res.info.at(build).at("flags"),
-                                   fmt_ratio(ratio), "", -1,
+                                   fmt_ratio(ratio), "<= 1.5x", verdict(ratio, 1.5, false),
                                    "textbook path / motus_step (SoA, no walls): " + fmt_ratio(vs_motus)});
+                targets.push_back({"motus_step over the same structs (motus_state_of_particles, same scene) / plain "
+                                   "loop, N = 5000, " + config_name(dims, precision) + ", " +
+                                       res.info.at(build).at("flags"),
+                                   fmt_ratio(engine), "", -1, "the fast way through a game's own array"});
             }
     }
     // 3: each scene against its hand-written loop; and what the general kernel costs.

@@ -59,8 +59,15 @@ enum {
     THROUGHPUT_MOTUS_RK4,
     THROUGHPUT_MOTUS_FOREST_RUTH,
     THROUGHPUT_MOTUS_EXACT_LINEAR_DRAG,
+    THROUGHPUT_TEXTBOOK_ENGINE, /* the textbook's scene (gravity, damping, walls) through motus_step over the same
+                                   array of motus_particle (motus_state_of_particles: the engine reads the structs
+                                   through a stride) */
     THROUGHPUT_METHOD_COUNT
 };
+/* The methods that step an array of motus_particle (motus_particle3) rather than the x[], v[] arrays. */
+static inline int throughput_on_structs(int method) {
+    return method == THROUGHPUT_TEXTBOOK || method == THROUGHPUT_TEXTBOOK_HAND || method == THROUGHPUT_TEXTBOOK_ENGINE;
+}
 /* The motus_method a bench method steps with, or -1 for one that is not motus_step. */
 static inline int throughput_motus_method(int method) {
     if (method == THROUGHPUT_MOTUS || method == THROUGHPUT_GENERAL || method == THROUGHPUT_MOTUS_THREADS) return 0;

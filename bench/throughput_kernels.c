@@ -496,7 +496,8 @@ int NAME(throughput_supported)(const void *opaque, int scene, int method) {
     }
     switch (method) {
     case THROUGHPUT_TEXTBOOK:
-    case THROUGHPUT_TEXTBOOK_HAND: return scene == THROUGHPUT_GRAVITY_DAMPING;
+    case THROUGHPUT_TEXTBOOK_HAND:
+    case THROUGHPUT_TEXTBOOK_ENGINE: return scene == THROUGHPUT_GRAVITY_DAMPING;
 #ifdef _OPENMP
     case THROUGHPUT_RMW_THREADS: return scene == THROUGHPUT_MEMORY;
 #endif
@@ -543,6 +544,14 @@ void NAME(throughput_configure)(void *opaque, int scene, int method) {
         if (scene == THROUGHPUT_MASS_FORCES) w->state.force[d] = w->force[d];
     }
     if (scene == THROUGHPUT_MASS_FORCES) w->state.inverse_mass = w->inverse_mass;
+    if (method == THROUGHPUT_TEXTBOOK_ENGINE) { /* the textbook's walls, over its structs */
+        const real lo = 0, hi = (real)THROUGHPUT_BOUNDS;
+        w->scene.bounds_min = motus_v3(lo, lo, w->dims == 3 ? lo : 0);
+        w->scene.bounds_max = motus_v3(hi, hi, w->dims == 3 ? hi : 0);
+        w->scene.restitution = (real)THROUGHPUT_RESTITUTION;
+        w->state = w->dims == 2 ? motus_state_of_particles((motus_particle *)w->textbook, w->n)
+                                : motus_state_of_particles3((motus_particle3 *)w->textbook, w->n);
+    }
     if (integrator >= 0) {
         const size_t bytes = motus_scratch_size(&w->scene, &w->state);
         if (bytes != (size_t)-1 && bytes > w->motus_scratch_bytes) {
@@ -565,7 +574,7 @@ void NAME(throughput_reset)(void *opaque, int scene, int method) {
         for (i = 0; (size_t)i < 2 * w->state_count; ++i) w->scratch[i] = (real)(1 + (i & 1023));
         return;
     }
-    if (method == THROUGHPUT_TEXTBOOK || method == THROUGHPUT_TEXTBOOK_HAND) {
+    if (throughput_on_structs(method)) {
         const real mass = (real)(1.0 / THROUGHPUT_INVERSE_MASS);
         for (i = 0; i < n; ++i) {
             if (dims == 2) {
@@ -625,7 +634,7 @@ int NAME(throughput_run)(void *opaque, int scene, int method, int steps) {
     real *const *x = w->position, *const *v = w->velocity, *const *f = w->force;
     const int three = w->dims == 3;
     int s, failed = 0;
-    if (throughput_motus_method(method) >= 0 && method != THROUGHPUT_MOTUS_THREADS) {
+    if ((throughput_motus_method(method) >= 0 && method != THROUGHPUT_MOTUS_THREADS) || method == THROUGHPUT_TEXTBOOK_ENGINE) {
         REPEAT_MOTUS(step_motus(&w->scene, &w->state, h, w->motus_scratch, w->motus_scratch_bytes));
         return failed;
     }
@@ -700,7 +709,7 @@ void NAME(throughput_read)(const void *opaque, int scene, int method, int i, dou
     const work *w = (const work *)opaque;
     int d;
     (void)scene;
-    if (method == THROUGHPUT_TEXTBOOK || method == THROUGHPUT_TEXTBOOK_HAND) {
+    if (throughput_on_structs(method)) {
         if (w->dims == 2) {
             const motus_particle *p = (const motus_particle *)w->textbook + i;
             out[0] = p->position.x, out[1] = p->position.y, out[2] = p->velocity.x, out[3] = p->velocity.y;
@@ -730,7 +739,7 @@ long NAME(throughput_subnormals)(const void *opaque, int scene, int method) {
     int d;
     (void)scene;
     if (method == THROUGHPUT_COPY || method == THROUGHPUT_TRIAD) return count_subnormals(w->scratch, 2 * w->state_count);
-    if (method == THROUGHPUT_TEXTBOOK || method == THROUGHPUT_TEXTBOOK_HAND) {
+    if (throughput_on_structs(method)) {
         const size_t values = (w->dims == 2 ? sizeof(motus_particle) : sizeof(motus_particle3)) / sizeof(real);
         return count_subnormals((const real *)w->textbook, values * (size_t)w->n);
     }
