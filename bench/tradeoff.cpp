@@ -487,14 +487,23 @@ int main(int argc, char **argv) {
         }
         return best;
     };
+    // speedup: how many times faster than the peer motus must be at equal error (issue 11, item 6), 0 where
+    // the issue sets no target (the pair is reported only); on the spring problems, where the peer is handed
+    // a = -k*x as one formula and motus runs its coupled spring path, the target is 1.5x for every pair.
     struct pair_spec {
         std::string motus, peer;
+        double speedup;
     };
     const std::vector<pair_spec> pairs = {
-        {"explicit_euler", "odeint euler"},         {"semi_implicit_euler", "odeint symplectic_euler"},
-        {"velocity_verlet", "odeint velocity_verlet"},
-        {"rk4", "odeint runge_kutta4"},             {"rk4", "gsl rk4"},
-        {"forest_ruth", "odeint sb3a_mclachlan"},   {"best motus method", "gsl rk8pd"},
+        {"explicit_euler", "odeint euler", 0},           {"semi_implicit_euler", "odeint symplectic_euler", 2},
+        {"velocity_verlet", "odeint velocity_verlet", 3},
+        {"rk4", "odeint runge_kutta4", 4},               {"rk4", "gsl rk4", 4},
+        {"forest_ruth", "odeint sb3a_mclachlan", 0},     {"best motus method", "gsl rk8pd", 0},
+    };
+    auto required_speedup = [&](size_t pi, int which) -> double {
+        if (pairs[pi].speedup <= 0) return 0;
+        const bool spring = which == PROBLEM_HARMONIC_OSCILLATOR || which == PROBLEM_DAMPED_OSCILLATOR;
+        return spring ? 1.5 : pairs[pi].speedup;
     };
     // ratio[pair][precision][problem]
     std::vector<std::vector<std::vector<ratio_summary> > > ratio(
@@ -697,7 +706,7 @@ int main(int argc, char **argv) {
               "motus method) does not run the problem; —: the two error ranges do not overlap.\n\n";
         md << "| order | motus | peer | precision |";
         for (int which = 0; which < PROBLEM_COUNT; ++which) md << " " << short_names[which] << " |";
-        md << " all problems (range) | 2x faster? |\n|---|---|---|---|";
+        md << " all problems (range) | as fast as issue 11 asks? |\n|---|---|---|---|";
         for (int which = 0; which < PROBLEM_COUNT; ++which) md << "---|";
         md << "---|---|\n";
         for (size_t pi = 0; pi < pairs.size(); ++pi) {
@@ -717,14 +726,23 @@ int main(int argc, char **argv) {
                 const ratio_summary o = overall(pi, single);
                 md << " " << fmt_ratio(o.geo_mean);
                 if (o.levels) md << " (" << fmt_ratio(o.low) << "–" << fmt_ratio(o.high) << ")";
+                int asked = 0, met = 0;
+                for (int which = 0; which < PROBLEM_COUNT; ++which) {
+                    const double need = required_speedup(pi, which);
+                    if (need <= 0 || !ratio[pi][single][which].levels) continue;
+                    ++asked;
+                    met += ratio[pi][single][which].geo_mean <= 1 / need;
+                }
                 md << " | "
-                   << (!o.levels ? "—" : o.high <= 0.5 ? "yes, on every problem"
-                                         : o.geo_mean <= 0.5 ? "on average, not on every problem"
-                                                             : "**no**")
+                   << (!o.levels || !asked ? "— (no target)" : met == asked ? "yes, on every problem"
+                                                 : met ? "on " + std::to_string(met) + " of " + std::to_string(asked) + " problems"
+                                                       : std::string("**no**"))
                    << " |\n";
             }
         }
-        md << "\n**Against the goal** (motus at most 0.5x the cost of the peer of the same order at equal error):\n\n";
+        md << "\n**Against the targets** (issue 11, item 6: at equal error, motus at least 2x faster than "
+              "odeint's symplectic_euler, 3x than its velocity_verlet, 4x than its runge_kutta4 and GSL's rk4; 1.5x on "
+              "the spring problems, harmonic_oscillator and damped_oscillator; a cost ratio motus/peer at most 1/that):\n\n";
         for (size_t pi = 0; pi < pairs.size(); ++pi) {
             for (int single = 0; single <= 1; ++single) {
                 const ratio_summary o = overall(pi, single);
@@ -732,10 +750,13 @@ int main(int argc, char **argv) {
                 std::string met, missed;
                 for (int which = 0; which < PROBLEM_COUNT; ++which) {
                     const ratio_summary &r = ratio[pi][single][which];
-                    if (!r.levels) continue;
-                    std::string &list = r.geo_mean <= 0.5 ? met : missed;
-                    list += (list.empty() ? "" : ", ") + std::string(problems[which].name) + " " + fmt_ratio(r.geo_mean);
+                    const double need = required_speedup(pi, which);
+                    if (!r.levels || need <= 0) continue;
+                    std::string &list = r.geo_mean <= 1 / need ? met : missed;
+                    list += (list.empty() ? "" : ", ") + std::string(problems[which].name) + " " + fmt_ratio(r.geo_mean) +
+                            " (needs <= " + fmt_ratio(1 / need) + ")";
                 }
+                if (pairs[pi].speedup <= 0) continue;
                 md << "- " << pairs[pi].motus << " vs " << pairs[pi].peer << " (" << (single ? "float" : "double")
                    << "): motus/peer " << fmt_ratio(o.geo_mean) << " overall; "
                    << (met.empty() ? "goal met on no problem" : "goal met on " + met)
