@@ -1,6 +1,7 @@
 /* Determinism: golden hashes of a 1000-particle scene after 500, 10^4 and 10^5 steps, in float and in double
    (MOTUS_DOUBLE), 2D and 3D: every method through motus_step (no coupling: all stages in registers), the
-   coupled path (springs: staged passes over scratch) for three methods, and a motus_particle_step loop; and
+   coupled path (springs: staged passes over scratch) for three methods, collisions (scene.contacts) in 2D and
+   3D, and a motus_particle_step loop; and
    the paths that run the same scene agree bit for bit (twins: a particle loop = the scene it equals, a range
    split = the whole, structs = plain arrays). The hash is FNV-1a 64 of every position and velocity bit,
    particle by particle (x, y[, z], vx, vy[, vz]), as this little-endian host stores them.
@@ -25,7 +26,8 @@
    length 0, every other one undamped: the -k*d path). The particle paths run what motus_particle_step can:
    no gravity or drag term, the weight is part of the accumulated force (m*g is exact for these masses),
    then motus_particle_bounce and motus_particle_damp_per_step; its twin is the scene with only walls and
-   damping over the same structs.
+   damping over the same structs. The contacts paths run the scene (no springs) with balls of 0.2 m that
+   collide with each other and the walls (restitution 0.75, friction 0.3) and pile up on the floor.
 
    Parameters reach the code through volatile reads, as run-time values do in a game: otherwise an
    optimising build may fold exp(-k*h) at compile time (correctly rounded, by MPFR) where -O0 calls libm.
@@ -48,7 +50,8 @@ enum {
     ANCHORED = CHAINS / 5,
     SPRINGS = CHAIN_SPRINGS + ANCHORED,
     KICKS = 64,
-    SPLIT = 333 /* the range path steps two ranges, split off a vector boundary */
+    SPLIT = 333, /* the range path steps two ranges, split off a vector boundary */
+    CONTACT_SCRATCH_REALS = 128 * COUNT
 };
 enum { CHECKPOINT_COUNT = 4 };
 static const long CHECKPOINTS[CHECKPOINT_COUNT] = {500, 2000, 10000, 100000};
@@ -61,7 +64,8 @@ enum {
     STRUCTS,  /* motus_step over motus_particle / motus_particle3 structs */
     SPRUNG,   /* motus_step with the springs: the coupled path */
     PARTICLE, /* motus_particle_step + bounce + damp_per_step, weight in the force */
-    PARTICLE_SCENE /* the scene PARTICLE equals: walls and damping only, over the structs */
+    PARTICLE_SCENE, /* the scene PARTICLE equals: walls and damping only, over the structs */
+    CONTACTS  /* motus_step with collisions (scene.contacts): the broadphase, the solver, the support sweeps */
 };
 typedef struct path {
     const char *name;
@@ -103,6 +107,8 @@ static const path PATHS[] = {
     {"particle_scene_2d", PARTICLE_SCENE, MOTUS_SEMI_IMPLICIT_EULER, 2, 26, 0},
     {"particle_step_3d", PARTICLE, MOTUS_SEMI_IMPLICIT_EULER, 3, -1, 0},
     {"particle_scene_3d", PARTICLE_SCENE, MOTUS_SEMI_IMPLICIT_EULER, 3, 28, 0},
+    {"contacts_semi_implicit_euler_2d", CONTACTS, MOTUS_SEMI_IMPLICIT_EULER, 2, -1, 0},
+    {"contacts_rk4_3d", CONTACTS, MOTUS_RK4, 3, -1, 0},
 };
 enum { PATH_COUNT = (int)(sizeof PATHS / sizeof PATHS[0]) };
 
@@ -119,7 +125,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x8e4ada53759451bbull, 0x4380d7305b8a5c41ull, 0x314b2a916a3c437bull,
      0x07c206bf4f727d0full, 0x01f7c280cf091412ull, 0x4f4d749254348d15ull,
      0x1e91685c47e47dceull, 0xe44131956f4800d1ull, 0x6c1e7671ee55c571ull,
-     0x6c1e7671ee55c571ull, 0x1c6673fe7180dac5ull, 0x1c6673fe7180dac5ull},
+     0x6c1e7671ee55c571ull, 0x1c6673fe7180dac5ull, 0x1c6673fe7180dac5ull,
+     0xfdfa510acb417d66ull, 0xa26f59e01872d35eull},
     {0x748e753ba4ed629cull, 0x6816935358de3b6dull, 0x71b20d7285871b20ull,
      0xecdf3291c65fc07eull, 0x977a493f2b2f6e74ull, 0x17126869b47e02c6ull,
      0xb0fa032b1e0cd1adull, 0xcc2219e5d531748full, 0x0ce5a4294f32a2cfull,
@@ -129,7 +136,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0xb0fa032b1e0cd1adull, 0x1cf4cda6e3226254ull, 0x7e6d0057c5e6fe94ull,
      0x5f5454182569d60aull, 0x2531474a79e5c7b6ull, 0x35355f9e06a620d9ull,
      0x3f3208dd0295c0a2ull, 0xedfe01a00a2be911ull, 0x5798c5eba60367f8ull,
-     0x5798c5eba60367f8ull, 0xab16cf8b206d2a81ull, 0xab16cf8b206d2a81ull},
+     0x5798c5eba60367f8ull, 0xab16cf8b206d2a81ull, 0xab16cf8b206d2a81ull,
+     0xcd8a638062583444ull, 0xfd630a4508b5bea1ull},
     {0x029ccf80dfacde26ull, 0xfdc8cda66a43e154ull, 0x55497e4ff73992b6ull,
      0x09a83519ea5e98f1ull, 0x0b3dc95aa583d300ull, 0xc431de9956c98cd4ull,
      0x718a25864c7a1d9dull, 0x56fdbe7c2dd4ecc7ull, 0x71fa7738cfbb0554ull,
@@ -139,7 +147,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x718a25864c7a1d9dull, 0x2e57b90271da5365ull, 0x6903a41d7b2d02f8ull,
      0x49a6324200e10188ull, 0x97810bd194ccbd98ull, 0xaf6cd258eb7c18f4ull,
      0x51d9d55c9dfb8f06ull, 0x7cc41993bfd4ee1eull, 0x2620d062a3fa7931ull,
-     0x2620d062a3fa7931ull, 0x0c088d445822724eull, 0x0c088d445822724eull},
+     0x2620d062a3fa7931ull, 0x0c088d445822724eull, 0x0c088d445822724eull,
+     0xb569fb0fee203243ull, 0x6e232f0367adaf79ull},
     {0x32aecd662021863full, 0x4ae1b00113eac12full, 0xd809808f21d04146ull,
      0x0f8b0e811b9cf209ull, 0x366da2862db4797cull, 0x9c728cb0a2d440f4ull,
      0xbe5c87f57af65c20ull, 0x7f7e2edc6bcb1fe9ull, 0xe34827ae41cd7195ull,
@@ -149,7 +158,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0xbe5c87f57af65c20ull, 0x3c09f3743e4ec9dfull, 0x6085dda4665cc327ull,
      0x16235fe6baa381acull, 0x9acb38a07088d818ull, 0xb2cbad9d8d7e1b20ull,
      0x4b403eaeacc5f1c8ull, 0xa20f8a01e4b73535ull, 0x4591d91e0487cfa3ull,
-     0x4591d91e0487cfa3ull, 0x70f200851a682d37ull, 0x70f200851a682d37ull},
+     0x4591d91e0487cfa3ull, 0x70f200851a682d37ull, 0x70f200851a682d37ull,
+     0xff891fd613d86447ull, 0xf8f25d56e2310dd1ull},
 };
 static const uint64_t GLIBC_EXP_BITS = 0x3fefddf00bbd0dacull;
 #else
@@ -163,7 +173,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x061339b7b249b16dull, 0x707d3dec07740166ull, 0x1ba625d5bd114e58ull,
      0xaaebb6f961b9debaull, 0xd0bf4724f3b3bdf8ull, 0x6bc36789aac1dbadull,
      0xb17da7df79c75525ull, 0xdf60b31e1dc7165eull, 0x0060f97004c70802ull,
-     0x0060f97004c70802ull, 0x470f9db34b62298aull, 0x470f9db34b62298aull},
+     0x0060f97004c70802ull, 0x470f9db34b62298aull, 0x470f9db34b62298aull,
+     0x8146db799a069469ull, 0x518019399fa57370ull},
     {0xfb25b7111e792068ull, 0x09fa7d5b46451f04ull, 0xcec758f6ab3d856eull,
      0xe28d3efe37f92a35ull, 0xa8898454fcef8513ull, 0xac50b691d0695095ull,
      0xdec28211a496d744ull, 0x995b596f9340fff6ull, 0x9076df96d8cb2158ull,
@@ -173,7 +184,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0xdec28211a496d744ull, 0x265348067bd88102ull, 0x1571aaf0f4cce359ull,
      0x6a8a999e2849b4ecull, 0xbae139b160154323ull, 0xb75a63ff8e369b62ull,
      0xc6f0645152868b4eull, 0xfb1896760da6a75full, 0x6c0bb31aa9774eefull,
-     0x6c0bb31aa9774eefull, 0xf4280c86e7d1bc30ull, 0xf4280c86e7d1bc30ull},
+     0x6c0bb31aa9774eefull, 0xf4280c86e7d1bc30ull, 0xf4280c86e7d1bc30ull,
+     0x49249b9c1389f58eull, 0x8cb035ad3a9f667dull},
     {0x394caae1e0a22c41ull, 0x514fde2e0177ac00ull, 0x256a490635bce549ull,
      0xbe602355ecabd32bull, 0x6ffa5db4f308848eull, 0x1f4948ea7a162766ull,
      0x31cb015a6a1c2c13ull, 0xe5896052957af91dull, 0x0910c24fa5046cebull,
@@ -183,7 +195,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x31cb015a6a1c2c13ull, 0x9ac27062417614a9ull, 0x0cff139611f5596dull,
      0x8216bf7475acbae8ull, 0x8d7e1cf3b8f198e3ull, 0x8af1b0a07c909da8ull,
      0xdd2e1cb0918e3df0ull, 0xb90647ad52c37956ull, 0x37a4643247a7bb8full,
-     0x37a4643247a7bb8full, 0xd82c85ee89ec0ab6ull, 0xd82c85ee89ec0ab6ull},
+     0x37a4643247a7bb8full, 0xd82c85ee89ec0ab6ull, 0xd82c85ee89ec0ab6ull,
+     0x3886d4e3ba2db8abull, 0xec6f74f846283282ull},
     {0x2d2d2d9b893c1b5dull, 0x5cabe8a1b89c2ef2ull, 0xd5d2c626930120aaull,
      0xe2c9b5452b5d74bfull, 0xc9d78cabca9354afull, 0xdbf1b442375307a0ull,
      0x71f3a9626392dfdcull, 0xb9fd3724f928aa88ull, 0x9c0552570a3b05bdull,
@@ -193,7 +206,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x71f3a9626392dfdcull, 0x0576ccdc14e374afull, 0xd6ab5b496fbacbe0ull,
      0x3f75cce652564852ull, 0x844987068c0039c7ull, 0x6d1d31dbd2b062fdull,
      0x3efadf68f89418b2ull, 0x083d726ad0ac8f6full, 0x4a7fa2d0dc5ae660ull,
-     0x4a7fa2d0dc5ae660ull, 0x10a49eaecb4a9da9ull, 0x10a49eaecb4a9da9ull},
+     0x4a7fa2d0dc5ae660ull, 0x10a49eaecb4a9da9ull, 0x10a49eaecb4a9da9ull,
+     0xb639053155a780a3ull, 0x52b4412e29d2d9f4ull},
 };
 static const uint64_t GLIBC_EXP_BITS = 0x3f7eef80ull;
 #endif
@@ -201,7 +215,7 @@ static const uint64_t GLIBC_EXP_BITS = 0x3f7eef80ull;
 /* ---- the scene ------------------------------------------------------------------------------------ */
 typedef struct parameters {
     motus_real h, gravity, linear_drag, quadratic_drag, attractor_y, attractor_strength, stiffness,
-        spring_damping, damping, restitution;
+        spring_damping, damping, restitution, radius, friction;
     motus_vec3 bounds_min, bounds_max;
 } parameters;
 
@@ -223,19 +237,22 @@ static parameters scene_parameters(void) {
     p.spring_damping = at_run_time(1.0);
     p.damping = at_run_time(0.0005); /* the fraction removed each step */
     p.restitution = at_run_time(0.75);
+    p.radius = at_run_time(0.2);
+    p.friction = at_run_time(0.3);
     p.bounds_min = motus_v3(at_run_time(-20.0), at_run_time(-15.0), at_run_time(-10.0));
     p.bounds_max = motus_v3(at_run_time(20.0), at_run_time(15.0), at_run_time(10.0));
     return p;
 }
 
-/* Everything a run touches, static: about 300 KB. */
+/* Everything a run touches, static: about 0.8 MB in float, 1.5 MB in double (mostly the contacts' scratch). */
 typedef struct world {
     motus_particle particles[COUNT];
     motus_particle3 particles3[COUNT];
     motus_real x[3][COUNT], v[3][COUNT], f[3][COUNT], inverse_mass[COUNT];
     motus_real weight[COUNT];
     motus_spring springs[SPRINGS];
-    motus_real scratch[3 * 6 * COUNT]; /* 3D, RK4: (2 + 4 evaluations) * 3 reals a particle */
+    /* 3D, RK4 with springs: (2 + 4 evaluations) * 3 reals a particle; contacts need more (the grid, the pairs) */
+    motus_real scratch[CONTACT_SCRATCH_REALS];
     motus_real kick[KICKS];
 } world;
 static world W;
@@ -364,6 +381,12 @@ static void make_scene(const path *run, const parameters *p, motus_scene *scene)
         scene->attractor = motus_v3(0, p->attractor_y, 0);
         scene->attractor_strength = p->attractor_strength;
     }
+    if (run->kind == CONTACTS) { /* balls of 0.2 m: the chains' links (0.5 m apart) start clear of each other */
+        scene->contacts.enabled = 1;
+        scene->contacts.radius = p->radius;
+        scene->contacts.restitution = p->restitution;
+        scene->contacts.friction = p->friction;
+    }
     if (run->kind == SPRUNG) {
         scene->springs = W.springs;
         scene->spring_count = SPRINGS;
@@ -486,6 +509,12 @@ TEST(particle_step_equals_scene) {
     ensure_golden_2d_3d("particle_step");
     ensure_golden_2d_3d("particle_scene");
 }
+/* Collisions (issue 12: the pair order depends on the data only): a 2D scene by semi-implicit Euler and a
+   3D one by RK4, the balls falling into piles on the floor. */
+TEST(contacts) {
+    ensure_golden("contacts_semi_implicit_euler_2d");
+    ensure_golden("contacts_rk4_3d");
+}
 
 /* The golden table itself: a twin has its twin's hashes, the hashes are distinct otherwise (a scene that
    came to rest, or a path that ignored its method or its springs, would repeat one) and from one
@@ -572,6 +601,17 @@ static int print_golden(void) {
     return errors != 0;
 }
 
+/* --golden-path NAME: one path's column of the tables (a new path, without rerunning the others). */
+static int print_golden_path(const char *name) {
+    uint64_t hashes[CHECKPOINT_COUNT];
+    const long errors = run_path(&PATHS[path_index(name)], CHECKPOINTS[CHECKPOINT_COUNT - 1], hashes);
+    int c;
+    for (c = 0; c < CHECKPOINT_COUNT; ++c)
+        printf("%s after %ld steps: 0x%016llxull\n", name, CHECKPOINTS[c], (unsigned long long)hashes[c]);
+    if (errors) fprintf(stderr, "%ld calls did not return MOTUS_OK\n", errors);
+    return errors != 0;
+}
+
 static const motus_test_case TESTS[] = {
     TEST_CASE(semi_implicit_euler),
     TEST_CASE(explicit_euler),
@@ -587,6 +627,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(springs_velocity_verlet),
     TEST_CASE(springs_rk4),
     TEST_CASE(particle_step_equals_scene),
+    TEST_CASE(contacts),
     TEST_CASE(golden_table_is_consistent),
 };
 
@@ -596,5 +637,6 @@ int main(int argc, char **argv) {
     (void)motus_scene_max_stable_dt;
     if (argc > 2 && strcmp(argv[1], "--matrix") == 0) return matrix(strtol(argv[2], NULL, 10));
     if (argc > 1 && strcmp(argv[1], "--golden") == 0) return print_golden();
+    if (argc > 2 && strcmp(argv[1], "--golden-path") == 0) return print_golden_path(argv[2]);
     return motus_test_main(argc, argv, TESTS, TEST_COUNT(TESTS));
 }
