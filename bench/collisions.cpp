@@ -107,11 +107,12 @@ void make_start(start &st, int dims, const std::string &scene, int n) {
         st.v[c].assign(c < dims ? (size_t)n : 0, 0.0);
     }
     int placed = 0;
-    auto put = [&](double x, double y, double z) {
-        st.x[0][placed] = x;
-        st.x[1][placed] = y;
-        if (dims == 3) st.x[2][placed] = z;
-        ++placed;
+    // Places ball `at`; the loops count with `placed += put(...)`, in sight of their conditions.
+    auto put = [&](int at, double x, double y, double z) {
+        st.x[0][at] = x;
+        st.x[1][at] = y;
+        if (dims == 3) st.x[2][at] = z;
+        return 1;
     };
     const double eps = 1e-9 * side;
     if (scene == "pile") {
@@ -119,14 +120,14 @@ void make_start(start &st, int dims, const std::string &scene, int n) {
         if (dims == 2) {
             for (int j = 0; placed < n; ++j)
                 for (double x = j % 2 ? 2 * r : r; x <= side - r + eps && placed < n; x += 2 * r)
-                    put(x, r + j * row, 0);
+                    placed += put(placed, x, r + j * row, 0);
         } else {
             for (int l = 0; placed < n; ++l) {
                 const double ox = l % 2 ? r : 0, oz = l % 2 ? row / 3 : 0;
                 for (int j = 0; r + oz + j * row <= side - r + eps && placed < n; ++j) {
                     const double x0 = r + std::fmod((j % 2 ? r : 0) + ox, 2 * r);
                     for (double x = x0; x <= side - r + eps && placed < n; x += 2 * r)
-                        put(x, r + l * layer, r + oz + j * row);
+                        placed += put(placed, x, r + l * layer, r + oz + j * row);
                 }
             }
         }
@@ -137,7 +138,7 @@ void make_start(start &st, int dims, const std::string &scene, int n) {
         for (int j = 0; placed < n; ++j)
             for (int a = 0; a < (dims == 3 ? across : 1) && placed < n; ++a)
                 for (int i = 0; i < across && placed < n; ++i)
-                    put(first + i * spacing + uniform(seed, -jitter, jitter),
+                    placed += put(placed, first + i * spacing + uniform(seed, -jitter, jitter),
                         first + j * spacing + uniform(seed, -jitter, jitter),
                         first + a * spacing + uniform(seed, -jitter, jitter));
         for (int c = 0; c < dims; ++c)
