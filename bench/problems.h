@@ -2,13 +2,14 @@
    Shared by bench/tradeoff and tests/numeric.c. One particle of mass 1 per problem (a batch is many copies);
    SI units; everything here is double, whatever motus_real is. Each problem carries the motus_scene that
    poses it (method left at 0, semi-implicit Euler: set scene.method before stepping). The oscillators'
-   scene has a spring to an anchor, so motus_step needs scratch for them (motus_scratch_size).
+   scene tethers the particle to the origin (scene.tether_stiffness: no coupling, no scratch);
+   problem_use_spring() poses them instead with an anchored spring, which couples (scratch needed).
 
    problem                  force model                              known answer
    free_fall                gravity (0, -9.81)                       x0 + v0 t + g t^2/2
    gravity_linear_drag      gravity + linear drag k = 0.5/s          v_inf t + (v0 - v_inf)(1 - e^-kt)/k
-   harmonic_oscillator      spring to the origin, k = 4 N/m          x0 cos wt + v0/w sin wt, w = 2
-   damped_oscillator        the same spring + linear drag 0.4/s      underdamped closed form, zeta = 0.1
+   harmonic_oscillator      tether to the origin, k = 4 N/m          x0 cos wt + v0/w sin wt, w = 2
+   damped_oscillator        the same tether + linear drag 0.4/s      underdamped closed form, zeta = 0.1
    kepler_circular          attractor mu = 1 at the origin, r = 1    circle, period 2 pi, E = -1/2, L = 1
    kepler_eccentric         attractor mu = 1, e = 0.5, a = 1         Kepler's equation, period 2 pi,
                                                                      E = -1/2, L = sqrt(3)/2
@@ -32,7 +33,8 @@ typedef struct problem {
     problem_state start;
     double duration; /* seconds the error is measured over */
     motus_scene scene;   /* the forces; scene.method is 0 (set yours); scene.mass 0 = 1 kg */
-    motus_spring spring; /* used by the oscillators: scene.springs points here, so pass problems by pointer */
+    motus_spring spring; /* the oscillators' tether as a spring (problem_use_spring): scene.springs then points
+                            here, so pass problems by pointer */
     /* The exact state at time t, or NULL where there is no closed form. */
     problem_state (*exact)(double t);
     /* Total energy per unit mass (kinetic + potential), or NULL where energy is not conserved. */
@@ -167,8 +169,7 @@ static inline int problem_get(int which, problem *p) {
         p->spring.a = 0;
         p->spring.b = -1; /* to the anchor at the origin, rest length 0: F = -k x */
         p->spring.stiffness = (motus_real)(PROBLEM_OMEGA * PROBLEM_OMEGA);
-        p->scene.springs = &p->spring;
-        p->scene.spring_count = 1;
+        p->scene.tether_stiffness = p->spring.stiffness; /* tether at the origin: F = -k x */
         if (which == PROBLEM_HARMONIC_OSCILLATOR) {
             p->exact = problem_oscillator_exact;
             p->energy = problem_oscillator_energy;
@@ -223,6 +224,16 @@ static inline motus_particle3 problem_particle3(const problem *p) {
     motus_particle3_init(&particle, motus_v3((motus_real)p->start.x, (motus_real)p->start.y, 0), 1);
     particle.velocity = motus_v3((motus_real)p->start.vx, (motus_real)p->start.vy, 0);
     return particle;
+}
+
+/* An oscillator posed with an anchored spring (the same force, k*(x - anchor), through the coupled path)
+   instead of the tether; its anchor is p->spring.anchor. 0 for the other problems. */
+static inline int problem_use_spring(problem *p) {
+    if (p->spring.stiffness == 0) return 0;
+    p->scene.tether_stiffness = 0;
+    p->scene.springs = &p->spring;
+    p->scene.spring_count = 1;
+    return 1;
 }
 
 /* 1 if the problem's scene couples particles (a spring): motus_step needs scratch, motus_step_range refuses it. */

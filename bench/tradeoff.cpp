@@ -489,7 +489,8 @@ int main(int argc, char **argv) {
     };
     // speedup: how many times faster than the peer motus must be at equal error (issue 11, item 6), 0 where
     // the issue sets no target (the pair is reported only); on the spring problems, where the peer is handed
-    // a = -k*x as one formula and motus runs its coupled spring path, the target is 1.5x for every pair.
+    // a = -k*x as one formula (motus: its tether, k*(x - tether)/m in registers), the target is 1.5x for
+    // every pair.
     struct pair_spec {
         std::string motus, peer;
         double speedup;
@@ -647,9 +648,9 @@ int main(int argc, char **argv) {
               "then averaged geometrically (per problem, then over problems). Below 1 motus is cheaper; the goal "
               "is <= 0.5 (2x faster).\n";
         md << "- The peers get hand-written accelerations for each problem (what their user writes); motus "
-              "evaluates its general force model (a `motus_scene`: gravity, drags and the attractor on the fast path, "
-              "every stage in registers; the oscillators go through one anchor spring per particle, the coupled "
-              "path). odeint uses std::vector state, GSL `gsl_odeiv2_driver_apply_fixed_step`.\n\n";
+              "evaluates its general force model (a `motus_scene`: gravity, drags, the attractor and the tether on the fast path, "
+              "every stage in registers; the oscillators are tethered to the origin, `scene.tether_stiffness`, "
+              "also on the fast path). odeint uses std::vector state, GSL `gsl_odeiv2_driver_apply_fixed_step`.\n\n";
 
         const char *short_names[PROBLEM_COUNT] = {"free fall", "gravity + lin. drag", "harmonic osc.", "damped osc.",
                                                   "Kepler circ.", "Kepler ecc.", "projectile quad. drag"};

@@ -1,8 +1,9 @@
 /* tradeoff_motus.c - the motus side of bench/tradeoff: N copies of one reference problem in plain arrays
    (one per component: structure of arrays), stepped by motus_step under one motus_scene, as a game steps
-   its particles. Uncoupled problems (gravity, drags, the attractor) take motus's fast path: every stage in
-   registers, one read and one write of the state per step. The oscillators are one spring per particle to an
-   anchor at the origin, the coupled path (a pass per stage over scratch). Compiled twice by
+   its particles. Every problem is uncoupled (gravity, drags, the attractor; the oscillators' tether to the
+   origin) and takes motus's fast path: every stage in registers, one read and one write of the state per
+   step. A problem posed with springs (problem_use_spring) would get one spring per copy, the coupled path
+   (a pass per stage over scratch). Compiled twice by
    bench/CMakeLists.txt: in float (the default motus_real) and with MOTUS_DOUBLE; the public functions get
    the suffix _float or _double, and the engine is compiled static in each. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime under -std=c99 */

@@ -243,6 +243,7 @@ typedef struct motus_particle3 {
     X(MOTUS_ERROR_INVALID_DAMPING, "damping (per step or per second) must be in [0, 1], and not both set")       \
     X(MOTUS_ERROR_INVALID_DRAG, "linear and quadratic drag must be >= 0")                                        \
     X(MOTUS_ERROR_INVALID_ATTRACTOR, "attractor strength must be >= 0")                                          \
+    X(MOTUS_ERROR_INVALID_TETHER, "tether stiffness must be >= 0")                                               \
     X(MOTUS_ERROR_INVALID_BOUNDS, "bounds: each component of bounds_min must be <= that of bounds_max")          \
     X(MOTUS_ERROR_INVALID_RESTITUTION, "restitution must be in [0, 1]")                                          \
     X(MOTUS_ERROR_INVALID_SPRING, "a spring's ends must be in [0, count) (b = -1: anchored) and differ; its "     \
@@ -344,6 +345,11 @@ typedef struct motus_scene {
                                        same motion at any frame rate. At most one of the two is set. */
     motus_vec3 attractor;           /* position of an inverse-square attractor (a sun), m */
     motus_real attractor_strength;  /* mu = G*M >= 0, m^3/s^2: a -= mu*r/|r|^3, r from the attractor */
+    motus_vec3 tether;              /* the fixed end of every particle's tether, m */
+    motus_real tether_stiffness;    /* k >= 0, N/m: F -= k*(x - tether), a spring of rest length 0 from each
+                                       particle to one point (an oscillator; particles that follow the
+                                       mouse). Unlike scene.springs it couples nothing: no scratch, every
+                                       stage in registers. Damp it with linear_drag */
     motus_vec3 bounds_min, bounds_max; /* a box the particles stay in; off while all six are 0. A component
                                        may be -Inf/+Inf: no wall on that side */
     motus_real restitution;         /* in [0, 1]: the share of normal speed kept through a wall bounce */
@@ -520,9 +526,9 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
    w_eff = alpha*g/2 + sqrt((alpha*g/2)^2 + w^2) must stay below the limit over h, alpha = 1 (Euler and
    Verlet family; exact for semi-implicit Euler), 2.8284/2.7853 (RK4), 2 (Forest-Ruth).
    motus_scene_max_stable_dt bounds w^2 by Gershgorin on M^-1*K: max over movable j of sum over j's springs
-   of k*(1/m_j + 1/m_other).
-   COUPLING: forces that do not couple particles (gravity, drags, the attractor, accumulated forces, damping,
-   bounds) are evaluated in registers, particle by particle, all stages of the method at once: one read
+   of k*(1/m_j + 1/m_other), plus the tether's k/m_j.
+   COUPLING: forces that do not couple particles (gravity, drags, the attractor, the tether, accumulated
+   forces, damping, bounds) are evaluated in registers, particle by particle, all stages of the method at once: one read
    and one write of the state per motus_step whatever the order and the substeps. Springs and the callback
    couple particles: each stage then is a pass over the particles that records the stage's state in
    scratch, then the callback and the springs add the stage's forces, then the next stage; the last pass
@@ -1471,7 +1477,8 @@ enum {
     MOTUS__T_DAMPING = 1 << 6,
     MOTUS__T_BOUNDS = 1 << 7,
     MOTUS__T_COUPLED = 1 << 8,  /* springs or a callback: stage forces in scratch */
-    MOTUS__T_DRY = 1 << 9       /* MOTUS_CHECKED's run that stores nothing */
+    MOTUS__T_DRY = 1 << 9,      /* MOTUS_CHECKED's run that stores nothing */
+    MOTUS__T_TETHER = 1 << 10
 };
 /* The terms a kernel sees, by `shape` (a constant where the kernel is compiled):
    - MOTUS__SHAPE_ANY, the general kernel (any stride, coupling, the dry run): every term read from the job
@@ -1505,6 +1512,7 @@ typedef struct motus__job {
     const motus_real *f[3], *inverse_mass;
     /* scene terms */
     motus__lane gravity[3], linear_drag, quadratic_drag, attractor[3], attractor_strength, uniform_inverse_mass;
+    motus__lane tether[3], tether_stiffness;
     motus__lane kept, rest_speed, bounds_min[3], bounds_max[3], bounce, largest;
     /* step constants: h and the fractions of it the methods use */
     motus__lane h, half_h, half_h2, sixth_h, fr_drift_out, fr_kick_out, fr_drift_in, fr_kick_in;
@@ -1565,6 +1573,19 @@ static MOTUS__NOINLINE void motus__costly_terms_3(const motus__job *j, const mot
     motus__costly_terms(j, x, v, a, 3);
 }
 
+/* The tether's pull where x - tether overflowed (both beyond half the largest real, on opposite sides):
+   formed from halves, (((x/2 - tether/2)*k)*(1/m))*2, which overflows only if the pull itself does. */
+static MOTUS__NOINLINE void motus__tether_far(const motus__job *j, const motus__lane *x,
+                                             const motus__lane *inverse_mass, motus__lane *pull, int dims) {
+    const motus__lane zero = motus__splat(0), half = motus__splat(MOTUS_R(0.5)), two = motus__splat(2);
+    int d;
+    for (d = 0; d < dims; ++d) {
+        const motus__lane offset = x[d] - j->tether[d];
+        const motus__lane scaled = (((x[d] * half - j->tether[d] * half) * j->tether_stiffness) * *inverse_mass) * two;
+        pull[d] = motus__select((motus__mask)(offset - offset != zero), scaled, pull[d]);
+    }
+}
+
 /* The acceleration at a stage, from the terms that do not couple particles, plus the stage's coupled force
    (springs, callback) when there is one. base = F*(1/m) of the accumulated force, or 0. Terms that are
    off are skipped, not added as zero (which would turn a -0 into +0): the same bits whatever path. */
@@ -1580,6 +1601,25 @@ MOTUS__KI void motus__acceleration(const motus__job *j, const motus__lane *x, co
         MOTUS__EACH_D(a[d] = j->gravity[d] - v[d] * j->linear_drag;);
     else
         MOTUS__EACH_D(a[d] = j->gravity[d];);
+    if (t & MOTUS__T_TETHER) { /* a -= (k*(x - tether))*(1/m): the force, then as an accumulated force */
+        motus__lane pull[3];
+        motus__mask far = (motus__mask)(zero != zero);
+        MOTUS__EACH_D(
+            const motus__lane offset = x[d] - j->tether[d];
+            far = far | (motus__mask)(offset - offset != zero); /* overflowed (or NaN) */
+            pull[d] = (offset * j->tether_stiffness) * inverse_mass;
+        );
+        if (motus__any(far)) { /* out of line, through copies (see below) */
+            motus__lane x_copy[3], pull_copy[3], inverse_mass_copy = inverse_mass;
+            MOTUS__EACH_D(
+                x_copy[d] = x[d];
+                pull_copy[d] = pull[d];
+            );
+            motus__tether_far(j, x_copy, &inverse_mass_copy, pull_copy, dims);
+            MOTUS__EACH_D(pull[d] = pull_copy[d];);
+        }
+        MOTUS__EACH_D(a[d] = a[d] - pull[d];);
+    }
     if (t & (MOTUS__T_QUADRATIC_DRAG | MOTUS__T_ATTRACTOR)) {
         /* Copies go to the call, so that x, v and a themselves never have their address taken and stay in
            registers on the paths that do not make it. */
@@ -2007,9 +2047,10 @@ MOTUS_API motus_result motus_scene_check(const motus_scene *scene, int dimension
                                          motus_check_report *report) {
     static const char *const gravity[3] = {"scene.gravity.x", "scene.gravity.y", "scene.gravity.z"};
     static const char *const attractor[3] = {"scene.attractor.x", "scene.attractor.y", "scene.attractor.z"};
+    static const char *const tether_names[3] = {"scene.tether.x", "scene.tether.y", "scene.tether.z"};
     static const char *const lo_names[3] = {"scene.bounds_min.x", "scene.bounds_min.y", "scene.bounds_min.z"};
     static const char *const hi_names[3] = {"scene.bounds_max.x", "scene.bounds_max.y", "scene.bounds_max.z"};
-    motus_real g[3], at[3], lo[3], hi[3];
+    motus_real g[3], at[3], tether[3], lo[3], hi[3];
     int d, k, dims = dimensions == 0 ? 2 : dimensions;
     motus__report(report, -1, MOTUS_FIELD_NONE, -1);
     if (!scene) return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "scene", -1);
@@ -2020,6 +2061,7 @@ MOTUS_API motus_result motus_scene_check(const motus_scene *scene, int dimension
     if (scene->substeps < 0) return motus__scene_fail(report, MOTUS_ERROR_INVALID_SUBSTEPS, "scene.substeps", -1);
     g[0] = scene->gravity.x, g[1] = scene->gravity.y, g[2] = scene->gravity.z;
     at[0] = scene->attractor.x, at[1] = scene->attractor.y, at[2] = scene->attractor.z;
+    tether[0] = scene->tether.x, tether[1] = scene->tether.y, tether[2] = scene->tether.z;
     lo[0] = scene->bounds_min.x, lo[1] = scene->bounds_min.y, lo[2] = scene->bounds_min.z;
     hi[0] = scene->bounds_max.x, hi[1] = scene->bounds_max.y, hi[2] = scene->bounds_max.z;
     for (d = 0; d < dims; ++d)
@@ -2044,6 +2086,13 @@ MOTUS_API motus_result motus_scene_check(const motus_scene *scene, int dimension
         return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.attractor_strength", -1);
     if (motus__negative(scene->attractor_strength))
         return motus__scene_fail(report, MOTUS_ERROR_INVALID_ATTRACTOR, "scene.attractor_strength", -1);
+    for (d = 0; d < dims; ++d)
+        if (!motus_real_is_finite(tether[d]))
+            return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, tether_names[d], -1);
+    if (!motus_real_is_finite(scene->tether_stiffness))
+        return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, "scene.tether_stiffness", -1);
+    if (motus__negative(scene->tether_stiffness))
+        return motus__scene_fail(report, MOTUS_ERROR_INVALID_TETHER, "scene.tether_stiffness", -1);
     for (d = 0; d < dims; ++d) {
         if (lo[d] != lo[d]) return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, lo_names[d], -1);
         if (hi[d] != hi[d]) return motus__scene_fail(report, MOTUS_ERROR_NOT_FINITE, hi_names[d], -1);
@@ -2087,7 +2136,8 @@ MOTUS_API motus_result motus_scene_check(const motus_scene *scene, int dimension
             return motus__scene_fail(report, MOTUS_ERROR_INVALID_SPRING, "scene.springs[index].damping", k);
     }
     if (scene->method == MOTUS_EXACT_LINEAR_DRAG &&
-        (scene->quadratic_drag != 0 || scene->attractor_strength != 0 || motus__coupled(scene)))
+        (scene->quadratic_drag != 0 || scene->attractor_strength != 0 || scene->tether_stiffness != 0 ||
+         motus__coupled(scene)))
         return motus__scene_fail(report, MOTUS_ERROR_UNSUPPORTED, "scene.method", -1);
     {
         const motus_contacts *c = &scene->contacts;
@@ -2239,6 +2289,7 @@ static void motus__job_init(motus__job *j, const motus_scene *scene, const motus
     const motus_real theta = (motus_real)1.3512071919596576340476878089715; /* Forest-Ruth: 1/(2 - 2^(1/3)) */
     const motus_real g[3] = {scene->gravity.x, scene->gravity.y, scene->gravity.z};
     const motus_real at[3] = {scene->attractor.x, scene->attractor.y, scene->attractor.z};
+    const motus_real tether[3] = {scene->tether.x, scene->tether.y, scene->tether.z};
     const motus_real lo[3] = {scene->bounds_min.x, scene->bounds_min.y, scene->bounds_min.z};
     const motus_real hi[3] = {scene->bounds_max.x, scene->bounds_max.y, scene->bounds_max.z};
     motus_real h, kept = 1;
@@ -2258,6 +2309,7 @@ static void motus__job_init(motus__job *j, const motus_scene *scene, const motus
         j->f[d] = state->force[d];
         j->gravity[d] = motus__splat(g[d] + 0); /* -0 as +0: every kernel then adds the same zero */
         j->attractor[d] = motus__splat(at[d]);
+        j->tether[d] = motus__splat(tether[d]);
         j->bounds_min[d] = motus__splat(lo[d]);
         j->bounds_max[d] = motus__splat(hi[d]);
         if (g[d] != 0) j->terms |= MOTUS__T_GRAVITY;
@@ -2268,6 +2320,7 @@ static void motus__job_init(motus__job *j, const motus_scene *scene, const motus
     if (scene->linear_drag != 0) j->terms |= MOTUS__T_LINEAR_DRAG;
     if (scene->quadratic_drag != 0) j->terms |= MOTUS__T_QUADRATIC_DRAG;
     if (scene->attractor_strength != 0) j->terms |= MOTUS__T_ATTRACTOR;
+    if (scene->tether_stiffness != 0) j->terms |= MOTUS__T_TETHER;
     if (scene->damping_per_step != 0) kept = MOTUS_R(1.0) - scene->damping_per_step;
     if (scene->damping_per_second != 0) kept = motus__kept_per_second(scene->damping_per_second, dt);
     if (scene->damping_per_step != 0 || scene->damping_per_second != 0) j->terms |= MOTUS__T_DAMPING;
@@ -2276,6 +2329,7 @@ static void motus__job_init(motus__job *j, const motus_scene *scene, const motus
     j->linear_drag = motus__splat(scene->linear_drag);
     j->quadratic_drag = motus__splat(scene->quadratic_drag);
     j->attractor_strength = motus__splat(scene->attractor_strength);
+    j->tether_stiffness = motus__splat(scene->tether_stiffness);
     j->uniform_inverse_mass = motus__splat(scene->mass > 0 ? MOTUS_R(1.0) / scene->mass : MOTUS_R(1.0));
     j->kept = motus__splat(kept);
     j->rest_speed = motus__splat((motus_real)(MOTUS_REST_SPEED));
@@ -3154,10 +3208,11 @@ MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const
             if (!motus_real_is_finite(speed)) return MOTUS_ERROR_OVERFLOW;
             if (speed > fastest) fastest = speed;
         }
-    if (scene->spring_count > 0) {
+    if (scene->spring_count > 0 || scene->tether_stiffness != 0) {
         const motus_real uniform = scene->mass > 0 ? MOTUS_R(1.0) / scene->mass : MOTUS_R(1.0);
+        const int springs = scene->spring_count > 0;
 #define MOTUS__W(p) (state->inverse_mass ? state->inverse_mass[(ptrdiff_t)(p) * stride] : uniform)
-        for (i = 0; i < 2 * count; ++i) sums[i] = 0;
+        for (i = 0; springs && i < 2 * count; ++i) sums[i] = 0;
         for (k = 0; k < scene->spring_count; ++k) {
             const motus_spring *s = &scene->springs[k];
             const motus_real both = MOTUS__W(s->a) + (s->b < 0 ? 0 : MOTUS__W(s->b));
@@ -3169,9 +3224,11 @@ MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const
             }
         }
         for (i = 0; i < count; ++i) {
+            /* the tether is a spring to a fixed end: k*(1/m) on the diagonal only */
+            const motus_real row = (springs ? sums[2 * i] : 0) + scene->tether_stiffness * MOTUS__W(i);
             if (MOTUS__W(i) == 0) continue; /* nothing moves it: its column bounds no motion */
-            if (sums[2 * i] > omega_squared) omega_squared = sums[2 * i];
-            if (sums[2 * i + 1] > spring_decay) spring_decay = sums[2 * i + 1];
+            if (row > omega_squared) omega_squared = row;
+            if (springs && sums[2 * i + 1] > spring_decay) spring_decay = sums[2 * i + 1];
         }
 #undef MOTUS__W
     }

@@ -1,7 +1,7 @@
 /* The engine's kernels against each other and against the particle functions, bit for bit.
 
    For every method, 2D and 3D, and every combination of the scene's terms (gravity, linear drag, quadratic
-   drag, attractor, damping none / per step / per second, bounds with restitution, an accumulated force
+   drag, attractor, tether, damping none / per step / per second, bounds with restitution, an accumulated force
    array or none, an inverse_mass array with immovable particles or scene.mass, 1 to 3 substeps), over
    random particles (-0 velocity and force components included, one particle on the attractor), the same
    scene is stepped five ways and every way must hold the same bits after every step:
@@ -38,7 +38,8 @@ enum {
     T_BOUNDS = 1 << 4,
     T_FORCES = 1 << 5,
     T_MASS = 1 << 6,
-    T_ALL = (1 << 7) - 1
+    T_TETHER = 1 << 7,
+    T_ALL = (1 << 8) - 1
 };
 enum { DAMP_NONE, DAMP_PER_STEP, DAMP_PER_SECOND, DAMP_KINDS };
 
@@ -216,6 +217,10 @@ static void make_scene(motus_scene *scene, const setup *s) {
     if (s->terms & T_LINEAR_DRAG) scene->linear_drag = random_real(0.05, 1);
     if (s->terms & T_QUADRATIC_DRAG) scene->quadratic_drag = random_real(0.01, 0.2);
     if (s->terms & T_ATTRACTOR) scene->attractor_strength = random_real(1, 50);
+    if (s->terms & T_TETHER) {
+        scene->tether = random_vec3(-5, 5);
+        scene->tether_stiffness = random_real(0.5, 20);
+    }
     if (s->damping == DAMP_PER_STEP) scene->damping_per_step = random_real(0, 0.1);
     if (s->damping == DAMP_PER_SECOND) scene->damping_per_second = random_real(0, 0.6);
     if (s->terms & T_BOUNDS) {
@@ -309,7 +314,7 @@ static int paths_agree(const setup *s, uint32_t seed) {
     ENSURE(scratch_bytes == (size_t)s->dims * (size_t)(2 + record.evaluations) * sizeof(motus_real) * (size_t)s->count);
 #endif
     /* the exact stepper takes no quadratic drag, attractor or callback */
-    unsupported = s->method == MOTUS_EXACT_LINEAR_DRAG && (s->terms & (T_QUADRATIC_DRAG | T_ATTRACTOR));
+    unsupported = s->method == MOTUS_EXACT_LINEAR_DRAG && (s->terms & (T_QUADRATIC_DRAG | T_ATTRACTOR | T_TETHER));
     if (unsupported) {
         ENSURE_EQ_INT(motus_step(&scene, &sa, s->dt, NULL, 0), MOTUS_ERROR_UNSUPPORTED);
         ENSURE_EQ_INT(motus_step_range(&scene, &sa, 0, s->count, s->dt), MOTUS_ERROR_UNSUPPORTED);
@@ -399,7 +404,7 @@ TEST(counts_do_not_change_results) {
             motus_state full, part, alone;
             s.method = (motus_method)method, s.dims = dims, s.damping = DAMP_PER_SECOND, s.substeps = 2;
             s.terms = T_ALL, s.dt = (motus_real)(1.0 / 50.0), s.count = MAX;
-            if (method == MOTUS_EXACT_LINEAR_DRAG) s.terms &= ~(unsigned)(T_QUADRATIC_DRAG | T_ATTRACTOR);
+            if (method == MOTUS_EXACT_LINEAR_DRAG) s.terms &= ~(unsigned)(T_QUADRATIC_DRAG | T_ATTRACTOR | T_TETHER);
             random_seed(1000u + (uint32_t)(method * 2 + dims));
             make_scene(&scene, &s);
             fill_particles(&D, MAX, &scene, 1); /* the start, kept */
@@ -687,7 +692,8 @@ static uint64_t fnv1a(uint64_t hash, const void *data, size_t size) {
     return hash;
 }
 static int dump(void) {
-    static const unsigned term_sets[] = {0, T_GRAVITY | T_FORCES | T_MASS, T_ALL & ~(unsigned)(T_QUADRATIC_DRAG | T_ATTRACTOR),
+    static const unsigned term_sets[] = {0, T_GRAVITY | T_FORCES | T_MASS,
+                                         T_ALL & ~(unsigned)(T_QUADRATIC_DRAG | T_ATTRACTOR | T_TETHER),
                                          T_ALL};
     static motus_spring springs[300];
     int method, dims, k, j, step, coupled, errors = 0, lines = 0;

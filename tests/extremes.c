@@ -556,6 +556,42 @@ TEST(attractor_pull_far_away_is_representable) {
                 }
 }
 
+TEST(tether_pull_from_far_across_is_representable) {
+    /* A particle at +0.75*largest tethered at -0.75*largest: x - tether overflows, the pull k*(x - tether)/m
+       with k = 2^-20 N/m and 1 kg does not (1.5*largest*2^-20). One step of 1 s from rest must give that
+       velocity to rounding, in 2D and 3D, and a particle at the tether itself feels nothing. */
+    static const motus_method methods[3] = {MOTUS_SEMI_IMPLICIT_EULER, MOTUS_VELOCITY_VERLET, MOTUS_RK4};
+    const double largest = (double)(sizeof(motus_real) == sizeof(float) ? FLT_MAX : DBL_MAX);
+    int m, dims;
+    for (dims = 2; dims <= 3; ++dims)
+        for (m = 0; m < 3; ++m) {
+            motus_real x[2], y[2] = {0, 0}, z[2] = {0, 0}, vx[2] = {0, 0}, vy[2] = {0, 0}, vz[2] = {0, 0};
+            motus_scene scene;
+            motus_state state;
+            double expected;
+            memset(&scene, 0, sizeof scene);
+            memset(&state, 0, sizeof state);
+            scene.method = methods[m];
+            scene.tether = motus_v3((motus_real)(-0.75 * largest), 0, 0);
+            scene.tether_stiffness = (motus_real)ldexp(1, -20);
+            x[0] = (motus_real)(0.75 * largest);
+            x[1] = scene.tether.x;
+            expected = -(((double)x[0] * 0.5 - (double)scene.tether.x * 0.5) * ldexp(1, -19)); /* halves: no overflow in double */
+            state.dimensions = dims;
+            state.count = 2;
+            state.position[0] = x, state.position[1] = y, state.position[2] = z;
+            state.velocity[0] = vx, state.velocity[1] = vy, state.velocity[2] = vz;
+            /* a step of 2^-30 s keeps the particle where it is to rounding: the pull is the same at every stage */
+            ENSURE_EQ_INT(motus_step(&scene, &state, (motus_real)ldexp(1, -30), NULL, 0), MOTUS_OK);
+            if (!(fabs((double)vx[0] / (expected * ldexp(1, -30)) - 1) <= 1e-5)) {
+                fprintf(stderr, "  %s, %dD: v %g, expected %g\n", method_name(methods[m]), dims, (double)vx[0],
+                        expected * ldexp(1, -30));
+                motus_test_failures++;
+            }
+            ENSURE(vx[1] == 0 && x[1] == scene.tether.x && vy[0] == 0 && vz[0] == 0);
+        }
+}
+
 TEST(exact_stepper_at_huge_drag_and_dt) {
     /* (d) Drag 1e38 /s over 1e20 s: u = k*h = 1e58 overflows float, and h^2/2 = 5e39 too. The particle ends
        at the terminal velocity a/k (1e-37 m/s, a normal float) after moving v0/k + a*(dt - 1/k)/k: finite,
@@ -723,6 +759,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(scene_without_damping_does_not_flush),
     TEST_CASE(substeps_for_a_stable_dt_of_negative_zero_is_too_stiff),
     TEST_CASE(attractor_pull_far_away_is_representable),
+    TEST_CASE(tether_pull_from_far_across_is_representable),
     TEST_CASE(exact_stepper_at_huge_drag_and_dt),
     TEST_CASE(spring_of_1e20_at_its_rest_length_of_1e20),
     TEST_CASE(subnormal_dt_in_substeps_still_moves),

@@ -101,6 +101,8 @@ static void setup_scene(motus_method method) {
     s->quadratic_drag = MOTUS_R(0.01);
     s->attractor = motus_v3(3, 0, -1);
     s->attractor_strength = 2;
+    s->tether = motus_v3(-1, 2, MOTUS_R(0.5));
+    s->tether_stiffness = MOTUS_R(1.5);
     s->springs = W.springs;
     s->spring_count = SPRINGS;
     s->force_callback = world_callback;
@@ -495,9 +497,11 @@ static motus_result break_scene(int which, const char **what) {
     case 12: *what = "spring rest_length"; sp[0].rest_length = bad_real(bad); return MOTUS_ERROR_NOT_FINITE;
     case 13: *what = "spring stiffness"; sp[2].stiffness = bad_real(bad); return MOTUS_ERROR_NOT_FINITE;
     case 14: *what = "spring damping"; sp[0].damping = bad_real(bad); return MOTUS_ERROR_NOT_FINITE;
+    case 15: *what = "tether.y"; s->tether.y = bad_real(bad); return MOTUS_ERROR_NOT_FINITE;
+    case 16: *what = "tether_stiffness"; s->tether_stiffness = bad_real(bad); return MOTUS_ERROR_NOT_FINITE;
     default: break;
     }
-    switch (which - 15 * BAD_REALS) {
+    switch (which - 17 * BAD_REALS) {
     case 0: *what = "bounds_min.y NaN"; s->bounds_min.y = not_a_number(); return MOTUS_ERROR_NOT_FINITE;
     case 1: *what = "bounds_max.z NaN"; s->bounds_max.z = not_a_number(); return MOTUS_ERROR_NOT_FINITE;
     case 2: *what = "bounds min > max"; s->bounds_min.x = 200; return MOTUS_ERROR_INVALID_BOUNDS;
@@ -539,13 +543,19 @@ static motus_result break_scene(int which, const char **what) {
     case 35:
         *what = "exact + springs";
         s->method = MOTUS_EXACT_LINEAR_DRAG, s->quadratic_drag = 0, s->attractor_strength = 0;
-        s->force_callback = NULL;
+        s->force_callback = NULL, s->tether_stiffness = 0;
         return MOTUS_ERROR_UNSUPPORTED;
     case 36:
         *what = "exact + callback";
         s->method = MOTUS_EXACT_LINEAR_DRAG, s->quadratic_drag = 0, s->attractor_strength = 0;
-        s->springs = NULL, s->spring_count = 0;
+        s->springs = NULL, s->spring_count = 0, s->tether_stiffness = 0;
         return MOTUS_ERROR_UNSUPPORTED;
+    case 37:
+        *what = "exact + tether";
+        s->method = MOTUS_EXACT_LINEAR_DRAG, s->quadratic_drag = 0, s->attractor_strength = 0;
+        s->springs = NULL, s->spring_count = 0, s->force_callback = NULL;
+        return MOTUS_ERROR_UNSUPPORTED;
+    case 38: *what = "tether_stiffness < 0"; s->tether_stiffness = -REAL_TRUE_MIN; return MOTUS_ERROR_INVALID_TETHER;
     default: return MOTUS_RESULT_COUNT;
     }
 }
@@ -578,7 +588,7 @@ TEST(every_bad_scene_is_refused_by_every_function) {
             EXPECT(expected, what, motus_scene_max_stable_dt(&W.scene, &W.state, &W.max_dt, W.scratch, sizeof W.scratch));
             restore();
         }
-        ENSURE(which == 15 * BAD_REALS + 37);
+        ENSURE(which == 17 * BAD_REALS + 39);
     }
 }
 
@@ -1053,6 +1063,52 @@ TEST(attractor_at_the_origin_with_a_partial_vector) {
     }
 }
 
+TEST(tether_names_its_fields_and_takes_signed_zeros) {
+    /* The report names the tether's field; a stiffness of -0 is no tether (not negative), and a tether at
+       -0 pulls as one at +0: the same bits. */
+    motus_real x[2] = {1, -2}, y[2] = {3, MOTUS_R(0.5)}, vx[2] = {0, 1}, vy[2] = {0, 0};
+    motus_real x2[2] = {1, -2}, y2[2] = {3, MOTUS_R(0.5)}, vx2[2] = {0, 1}, vy2[2] = {0, 0};
+    motus_check_report report;
+    motus_scene scene;
+    motus_state state, other;
+    memset(&scene, 0, sizeof scene);
+    memset(&state, 0, sizeof state);
+    state.count = 2;
+    state.position[0] = x, state.position[1] = y, state.velocity[0] = vx, state.velocity[1] = vy;
+    other = state;
+    other.position[0] = x2, other.position[1] = y2, other.velocity[0] = vx2, other.velocity[1] = vy2;
+    scene.tether.y = not_a_number();
+    scene.tether_stiffness = 2;
+    ENSURE_EQ_INT(motus_scene_check(&scene, 2, 2, &report), MOTUS_ERROR_NOT_FINITE);
+    ENSURE(strcmp(report.field_name, "scene.tether.y") == 0);
+    scene.tether.y = 0;
+    scene.tether.z = infinity(); /* z is not read in 2D */
+    ENSURE_EQ_INT(motus_scene_check(&scene, 2, 2, &report), MOTUS_OK);
+    ENSURE_EQ_INT(motus_scene_check(&scene, 3, 2, &report), MOTUS_ERROR_NOT_FINITE);
+    ENSURE(strcmp(report.field_name, "scene.tether.z") == 0);
+    scene.tether.z = 0;
+    scene.tether_stiffness = -1;
+    ENSURE_EQ_INT(motus_step(&scene, &state, MOTUS_R(0.1), NULL, 0), MOTUS_ERROR_INVALID_TETHER);
+    ENSURE_EQ_INT(motus_scene_check(&scene, 2, 2, &report), MOTUS_ERROR_INVALID_TETHER);
+    ENSURE(strcmp(report.field_name, "scene.tether_stiffness") == 0);
+    ENSURE(x[0] == 1 && vx[1] == 1); /* nothing written */
+    scene.tether_stiffness = -MOTUS_R(0.0);
+    ENSURE_EQ_INT(motus_step(&scene, &state, MOTUS_R(0.1), NULL, 0), MOTUS_OK);
+    ENSURE(vx[0] == 0 && vy[0] == 0 && x[1] == -2 + MOTUS_R(0.1)); /* no pull */
+    scene.tether_stiffness = 2;
+    scene.tether = motus_v3(MOTUS_R(0.0), MOTUS_R(0.0), 0);
+    ENSURE_EQ_INT(motus_step(&scene, &state, MOTUS_R(0.1), NULL, 0), MOTUS_OK);
+    scene.tether = motus_v3(-MOTUS_R(0.0), -MOTUS_R(0.0), 0);
+    ENSURE_EQ_INT(motus_step(&scene, &other, MOTUS_R(0.0), NULL, 0), MOTUS_OK);
+    scene.tether_stiffness = -MOTUS_R(0.0);
+    ENSURE_EQ_INT(motus_step(&scene, &other, MOTUS_R(0.1), NULL, 0), MOTUS_OK);
+    scene.tether_stiffness = 2;
+    ENSURE_EQ_INT(motus_step(&scene, &other, MOTUS_R(0.1), NULL, 0), MOTUS_OK);
+    ENSURE(memcmp(x, x2, sizeof x) == 0 && memcmp(y, y2, sizeof y) == 0);
+    ENSURE(memcmp(vx, vx2, sizeof vx) == 0 && memcmp(vy, vy2, sizeof vy) == 0);
+    ENSURE(vx[0] < 0 && vy[0] < 0); /* pulled towards the origin */
+}
+
 /* =================================================================================================
    motus_particles_check / motus_particles3_check and the messages
    ================================================================================================= */
@@ -1144,6 +1200,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(bad_data_reaching_other_particles),
     TEST_CASE(overflow_with_finite_data),
     TEST_CASE(attractor_at_the_origin_with_a_partial_vector),
+    TEST_CASE(tether_names_its_fields_and_takes_signed_zeros),
     TEST_CASE(particles_check_finds_the_first_bad_particle_and_field),
     TEST_CASE(field_names_and_messages),
 };

@@ -446,6 +446,50 @@ TEST(scene_max_stable_dt_bounds_the_springs) {
     }
 }
 
+TEST(scene_max_stable_dt_counts_the_tether) {
+    /* The tether is a spring to a fixed point on every particle: k/m on the diagonal. Alone (no scratch),
+       on the lightest movable particle; added to the springs' row sums; and the bound it gives is the edge
+       of stability: over 3000 steps from x = 1 the oscillator through motus_step stays within 20 (near the
+       limit the symplectic methods' invariant ellipse is long: |(x, v/w)| reaches 1/sqrt(1 - (wh/2)^2))
+       at 0.99 of it, and passes 1e6 or overflows (a step reports it) at 1.01. */
+    chain c;
+    motus_real dt = 0;
+    int m;
+    chain_init(&c, MOTUS_SEMI_IMPLICIT_EULER, 7, 100);
+    c.scene.spring_count = 0;
+    c.scene.tether_stiffness = 50;
+    c.inverse_mass[3] = 2; /* 0.5 kg: w^2 = 100 */
+    ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &dt, NULL, 0), MOTUS_OK);
+    ENSURE_NEAR(dt, 2 / sqrt(100.0), 4 * EPS);
+    c.inverse_mass[3] = 1;
+    c.scene.spring_count = 6; /* the chain's 4k/m = 400, plus 50 */
+    ENSURE_EQ_INT(scene_max_dt(&c.scene, &c.state, &dt), MOTUS_OK);
+    ENSURE_NEAR(dt, 2 / sqrt(450.0), 4 * EPS);
+    c.scene.spring_count = 0;
+    for (m = 0; m < MOTUS_METHOD_COUNT; ++m) {
+        int side;
+        if (!has_finite_limit((motus_method)m)) continue;
+        c.scene.method = (motus_method)m;
+        ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &dt, NULL, 0), MOTUS_OK);
+        for (side = 0; side < 2; ++side) {
+            const motus_real h = dt * (side ? MOTUS_R(1.01) : MOTUS_R(0.99));
+            double amplitude = HUGE_VAL;
+            int i;
+            motus_result r = MOTUS_OK;
+            memset(c.x, 0, sizeof c.x);
+            memset(c.v, 0, sizeof c.v);
+            c.x[0][1] = 1;
+            for (i = 0; i < 3000 && r == MOTUS_OK; ++i) r = motus_step(&c.scene, &c.state, h, NULL, 0);
+            if (r == MOTUS_OK) amplitude = sqrt((double)c.x[0][1] * c.x[0][1] + (double)c.v[0][1] * c.v[0][1] / 50);
+            else ENSURE(side == 1 && (r == MOTUS_ERROR_NOT_FINITE || r == MOTUS_ERROR_OVERFLOW));
+            printf("  tether, %-20s at %.2f of the bound: amplitude %.3g\n", method_name((motus_method)m),
+                   side ? 1.01 : 0.99, amplitude);
+            if (side) ENSURE(amplitude > 1e6);
+            else ENSURE(amplitude < 20);
+        }
+    }
+}
+
 TEST(scene_max_stable_dt_rejects_bad_input) {
     chain c, before;
     motus_real dt = 42, scratch[4];
@@ -1055,6 +1099,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(substeps_for_is_minimal),
     TEST_CASE(substeps_for_rejects_bad_input),
     TEST_CASE(scene_max_stable_dt_bounds_the_springs),
+    TEST_CASE(scene_max_stable_dt_counts_the_tether),
     TEST_CASE(scene_max_stable_dt_rejects_bad_input),
     TEST_CASE(substepping_keeps_a_stiff_spring_bounded),
     TEST_CASE(substepping_refuses_what_it_cannot_keep_stable),

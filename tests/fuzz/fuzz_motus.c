@@ -330,9 +330,13 @@ static void read_scene(world *w, reader *r) {
         s->contacts.friction = value(r, wild, MOTUS_R(1.0) / 64, 0);
         s->contacts.iterations = small(r, -1, 6);
     }
+    if (flags & 16384) { /* the tether */
+        s->tether = vec3_value(r, wild, MOTUS_R(0.5));
+        s->tether_stiffness = value(r, wild, 2, 0);
+    }
     if (flags & 4096) { /* one field of the scene anything at all */
         motus_real x = real(r);
-        switch (byte(r) % 12) {
+        switch (byte(r) % 14) {
         case 0: s->gravity.x = x; break;
         case 1: s->gravity.z = x; break;
         case 2: s->linear_drag = x; break;
@@ -344,6 +348,8 @@ static void read_scene(world *w, reader *r) {
         case 8: s->bounds_min.z = x; break;
         case 9: s->bounds_max.x = x; break;
         case 10: s->restitution = x; break;
+        case 12: s->tether.x = x; break;
+        case 13: s->tether_stiffness = x; break;
         default: s->mass = x; break;
         }
     }
