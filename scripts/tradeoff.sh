@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Usage: scripts/tradeoff.sh [tradeoff options...]
-# Measures every motus integrator (motus_step over structure-of-arrays state: the fast path for gravity, drags
-# and the attractor, the coupled path for the oscillators' anchor springs) against Boost.Odeint and GSL on the
+# Measures every motus integrator (motus_step over structure-of-arrays state: the fast path for gravity, drags,
+# the attractor and the oscillators' tether) against Boost.Odeint and GSL on the
 # reference problems of bench/problems.h, and draws the figures. Timed twice: a batch of N = 4096
 # particles (the figures in docs/) and N = 1 (one particle: every step pays the per-call overhead, of motus's
 # call as of the peers'), each with its own report. It installs the Debian 12 packages it needs and are missing (compilers, CMake, the

@@ -65,7 +65,8 @@ enum {
     SPRUNG,   /* motus_step with the springs: the coupled path */
     PARTICLE, /* motus_particle_step + bounce + damp_per_step, weight in the force */
     PARTICLE_SCENE, /* the scene PARTICLE equals: walls and damping only, over the structs */
-    CONTACTS  /* motus_step with collisions (scene.contacts): the broadphase, the solver, the support sweeps */
+    CONTACTS, /* motus_step with collisions (scene.contacts): the broadphase, the solver, the support sweeps */
+    TETHERED  /* SCENE with every particle tethered to a point (scene.tether: uncoupled, in registers) */
 };
 typedef struct path {
     const char *name;
@@ -109,6 +110,8 @@ static const path PATHS[] = {
     {"particle_scene_3d", PARTICLE_SCENE, MOTUS_SEMI_IMPLICIT_EULER, 3, 28, 0},
     {"contacts_semi_implicit_euler_2d", CONTACTS, MOTUS_SEMI_IMPLICIT_EULER, 2, -1, 0},
     {"contacts_rk4_3d", CONTACTS, MOTUS_RK4, 3, -1, 0},
+    {"tether_velocity_verlet_2d", TETHERED, MOTUS_VELOCITY_VERLET, 2, -1, 0},
+    {"tether_forest_ruth_3d", TETHERED, MOTUS_FOREST_RUTH, 3, -1, 0},
 };
 enum { PATH_COUNT = (int)(sizeof PATHS / sizeof PATHS[0]) };
 
@@ -126,7 +129,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x07c206bf4f727d0full, 0x01f7c280cf091412ull, 0x4f4d749254348d15ull,
      0x1e91685c47e47dceull, 0xe44131956f4800d1ull, 0x6c1e7671ee55c571ull,
      0x6c1e7671ee55c571ull, 0x1c6673fe7180dac5ull, 0x1c6673fe7180dac5ull,
-     0xfdfa510acb417d66ull, 0xa26f59e01872d35eull},
+     0xfdfa510acb417d66ull, 0xa26f59e01872d35eull,
+     0xedae4340a7291455ull, 0x178bd1e262ae1f2bull},
     {0x748e753ba4ed629cull, 0x6816935358de3b6dull, 0x71b20d7285871b20ull,
      0xecdf3291c65fc07eull, 0x977a493f2b2f6e74ull, 0x17126869b47e02c6ull,
      0xb0fa032b1e0cd1adull, 0xcc2219e5d531748full, 0x0ce5a4294f32a2cfull,
@@ -137,7 +141,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x5f5454182569d60aull, 0x2531474a79e5c7b6ull, 0x35355f9e06a620d9ull,
      0x3f3208dd0295c0a2ull, 0xedfe01a00a2be911ull, 0x5798c5eba60367f8ull,
      0x5798c5eba60367f8ull, 0xab16cf8b206d2a81ull, 0xab16cf8b206d2a81ull,
-     0xcd8a638062583444ull, 0xfd630a4508b5bea1ull},
+     0xcd8a638062583444ull, 0xfd630a4508b5bea1ull,
+     0x5c0ead12adb1484cull, 0xdf1e88f1e573d22aull},
     {0x029ccf80dfacde26ull, 0xfdc8cda66a43e154ull, 0x55497e4ff73992b6ull,
      0x09a83519ea5e98f1ull, 0x0b3dc95aa583d300ull, 0xc431de9956c98cd4ull,
      0x718a25864c7a1d9dull, 0x56fdbe7c2dd4ecc7ull, 0x71fa7738cfbb0554ull,
@@ -148,7 +153,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x49a6324200e10188ull, 0x97810bd194ccbd98ull, 0xaf6cd258eb7c18f4ull,
      0x51d9d55c9dfb8f06ull, 0x7cc41993bfd4ee1eull, 0x2620d062a3fa7931ull,
      0x2620d062a3fa7931ull, 0x0c088d445822724eull, 0x0c088d445822724eull,
-     0xb569fb0fee203243ull, 0x6e232f0367adaf79ull},
+     0xb569fb0fee203243ull, 0x6e232f0367adaf79ull,
+     0xc7076aa4db710196ull, 0x6935cf542fada8bdull},
     {0x32aecd662021863full, 0x4ae1b00113eac12full, 0xd809808f21d04146ull,
      0x0f8b0e811b9cf209ull, 0x366da2862db4797cull, 0x9c728cb0a2d440f4ull,
      0xbe5c87f57af65c20ull, 0x7f7e2edc6bcb1fe9ull, 0xe34827ae41cd7195ull,
@@ -159,7 +165,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x16235fe6baa381acull, 0x9acb38a07088d818ull, 0xb2cbad9d8d7e1b20ull,
      0x4b403eaeacc5f1c8ull, 0xa20f8a01e4b73535ull, 0x4591d91e0487cfa3ull,
      0x4591d91e0487cfa3ull, 0x70f200851a682d37ull, 0x70f200851a682d37ull,
-     0xff891fd613d86447ull, 0xf8f25d56e2310dd1ull},
+     0xff891fd613d86447ull, 0xf8f25d56e2310dd1ull,
+     0x234b8fbe01f1e2b1ull, 0xc841341cfaf60664ull},
 };
 static const uint64_t GLIBC_EXP_BITS = 0x3fefddf00bbd0dacull;
 #else
@@ -174,7 +181,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0xaaebb6f961b9debaull, 0xd0bf4724f3b3bdf8ull, 0x6bc36789aac1dbadull,
      0xb17da7df79c75525ull, 0xdf60b31e1dc7165eull, 0x0060f97004c70802ull,
      0x0060f97004c70802ull, 0x470f9db34b62298aull, 0x470f9db34b62298aull,
-     0x8146db799a069469ull, 0x518019399fa57370ull},
+     0x8146db799a069469ull, 0x518019399fa57370ull,
+     0x21da8edbac091937ull, 0xb63ebc709146c29eull},
     {0xfb25b7111e792068ull, 0x09fa7d5b46451f04ull, 0xcec758f6ab3d856eull,
      0xe28d3efe37f92a35ull, 0xa8898454fcef8513ull, 0xac50b691d0695095ull,
      0xdec28211a496d744ull, 0x995b596f9340fff6ull, 0x9076df96d8cb2158ull,
@@ -185,7 +193,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x6a8a999e2849b4ecull, 0xbae139b160154323ull, 0xb75a63ff8e369b62ull,
      0xc6f0645152868b4eull, 0xfb1896760da6a75full, 0x6c0bb31aa9774eefull,
      0x6c0bb31aa9774eefull, 0xf4280c86e7d1bc30ull, 0xf4280c86e7d1bc30ull,
-     0x49249b9c1389f58eull, 0x8cb035ad3a9f667dull},
+     0x49249b9c1389f58eull, 0x8cb035ad3a9f667dull,
+     0x31e6732079b846aeull, 0x5827b53efce3a3e9ull},
     {0x394caae1e0a22c41ull, 0x514fde2e0177ac00ull, 0x256a490635bce549ull,
      0xbe602355ecabd32bull, 0x6ffa5db4f308848eull, 0x1f4948ea7a162766ull,
      0x31cb015a6a1c2c13ull, 0xe5896052957af91dull, 0x0910c24fa5046cebull,
@@ -196,7 +205,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x8216bf7475acbae8ull, 0x8d7e1cf3b8f198e3ull, 0x8af1b0a07c909da8ull,
      0xdd2e1cb0918e3df0ull, 0xb90647ad52c37956ull, 0x37a4643247a7bb8full,
      0x37a4643247a7bb8full, 0xd82c85ee89ec0ab6ull, 0xd82c85ee89ec0ab6ull,
-     0x3886d4e3ba2db8abull, 0xec6f74f846283282ull},
+     0x3886d4e3ba2db8abull, 0xec6f74f846283282ull,
+     0x7351d48dab1cd491ull, 0xb422f703b9c1a298ull},
     {0x2d2d2d9b893c1b5dull, 0x5cabe8a1b89c2ef2ull, 0xd5d2c626930120aaull,
      0xe2c9b5452b5d74bfull, 0xc9d78cabca9354afull, 0xdbf1b442375307a0ull,
      0x71f3a9626392dfdcull, 0xb9fd3724f928aa88ull, 0x9c0552570a3b05bdull,
@@ -207,7 +217,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x3f75cce652564852ull, 0x844987068c0039c7ull, 0x6d1d31dbd2b062fdull,
      0x3efadf68f89418b2ull, 0x083d726ad0ac8f6full, 0x4a7fa2d0dc5ae660ull,
      0x4a7fa2d0dc5ae660ull, 0x10a49eaecb4a9da9ull, 0x10a49eaecb4a9da9ull,
-     0xb639053155a780a3ull, 0x52b4412e29d2d9f4ull},
+     0xb639053155a780a3ull, 0x52b4412e29d2d9f4ull,
+     0x6c807ea58d509359ull, 0x72c9aa6ff59df249ull},
 };
 static const uint64_t GLIBC_EXP_BITS = 0x3f7eef80ull;
 #endif
@@ -215,8 +226,8 @@ static const uint64_t GLIBC_EXP_BITS = 0x3f7eef80ull;
 /* ---- the scene ------------------------------------------------------------------------------------ */
 typedef struct parameters {
     motus_real h, gravity, linear_drag, quadratic_drag, attractor_y, attractor_strength, stiffness,
-        spring_damping, damping, restitution, radius, friction;
-    motus_vec3 bounds_min, bounds_max;
+        spring_damping, damping, restitution, radius, friction, tether_stiffness;
+    motus_vec3 bounds_min, bounds_max, tether;
 } parameters;
 
 /* A value the compiler cannot see: the scene's numbers arrive at run time, as in a game. */
@@ -239,6 +250,8 @@ static parameters scene_parameters(void) {
     p.restitution = at_run_time(0.75);
     p.radius = at_run_time(0.2);
     p.friction = at_run_time(0.3);
+    p.tether_stiffness = at_run_time(3.0);
+    p.tether = motus_v3(at_run_time(1.5), at_run_time(-2.0), at_run_time(0.5));
     p.bounds_min = motus_v3(at_run_time(-20.0), at_run_time(-15.0), at_run_time(-10.0));
     p.bounds_max = motus_v3(at_run_time(20.0), at_run_time(15.0), at_run_time(10.0));
     return p;
@@ -387,6 +400,10 @@ static void make_scene(const path *run, const parameters *p, motus_scene *scene)
         scene->contacts.restitution = p->restitution;
         scene->contacts.friction = p->friction;
     }
+    if (run->kind == TETHERED) {
+        scene->tether = p->tether;
+        scene->tether_stiffness = p->tether_stiffness;
+    }
     if (run->kind == SPRUNG) {
         scene->springs = W.springs;
         scene->spring_count = SPRINGS;
@@ -515,6 +532,11 @@ TEST(contacts) {
     ensure_golden("contacts_semi_implicit_euler_2d");
     ensure_golden("contacts_rk4_3d");
 }
+/* The tether (a term added after the tables above were first made: its own paths). */
+TEST(tether) {
+    ensure_golden("tether_velocity_verlet_2d");
+    ensure_golden("tether_forest_ruth_3d");
+}
 
 /* The golden table itself: a twin has its twin's hashes, the hashes are distinct otherwise (a scene that
    came to rest, or a path that ignored its method or its springs, would repeat one) and from one
@@ -628,6 +650,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(springs_rk4),
     TEST_CASE(particle_step_equals_scene),
     TEST_CASE(contacts),
+    TEST_CASE(tether),
     TEST_CASE(golden_table_is_consistent),
 };
 
