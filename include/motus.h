@@ -1282,8 +1282,8 @@ extern "C" {
 #endif
 
 /* An unoptimised build (GCC and Clang's -O0, where __OPTIMIZE__ is not defined) compiles only the general
-   kernel of each method: it gives the same bits as the fast ones, a debugger steps through one function per
-   method, and the unit compiles in a fraction of the time. */
+   kernel: it gives the same bits as the fast ones, a debugger steps through one function and each method's
+   own, and the unit compiles in a fraction of the time. */
 #if defined(__GNUC__) && !defined(__OPTIMIZE__)
 #define MOTUS__FAST_KERNELS 0
 #else
@@ -1505,6 +1505,7 @@ enum {
 
 typedef struct motus__job {
     unsigned terms;
+    motus_method method; /* for the general kernel, which runs every method */
     int dims, substeps, record_stage, apply_damping;
     motus_real substep_dt; /* h as a number, for the callback's stage times */
     ptrdiff_t stride;
@@ -1839,7 +1840,7 @@ static MOTUS__NOINLINE void motus__walls_3(const motus__job *j, motus__lane *x, 
 
 /* MOTUS__LANES particles (n of them real) from index i, as registers: loaded, stepped by every substep's
    method and walls, damped, checked, stored. dims and contiguous are constants where these are inlined, so
-   the compiler drops what they exclude. The general kernels run with dims 3 and read j->dims: a 2D state's
+   the compiler drops what they exclude. The general kernel runs with dims 3 and reads j->dims: a 2D state's
    z is 0 in, discarded out, and every x and y operation is the one a 2D kernel does (adding a +0 square to
    a sum of squares, or a 0 to a max of magnitudes, changes no bit), so the two agree bit for bit. */
 typedef struct motus__group {
@@ -1920,9 +1921,9 @@ MOTUS__KI void motus__group_finish(const motus__job *j, motus__group *g, const i
 #undef MOTUS__AXIS
 
 /* A kernel: particles [first, end) in groups of MOTUS__LANES, each through `method` (a name: the macro
-   makes one group function per method, so that a kernel holds only its own method's code, even at -O0).
-   Returns nonzero if the new state's check sum is not finite. Fast kernels (plain arrays, no coupling)
-   take whole groups with plain vector loads and hand the rest to the general kernel. */
+   makes one group function per method, so that a fast kernel holds only its own method's code). Returns
+   nonzero if the new state's check sum is not finite. Fast kernels (plain arrays, no coupling) take whole
+   groups with plain vector loads and hand the rest to the general kernel. */
 #define MOTUS__KERNEL_OF(method)                                                                                 \
     MOTUS__KI int motus__kernel_##method(const motus__job *job, int first, int end, const int dims,              \
                                          const int contiguous, const int coupled, const unsigned shape) {        \
@@ -1946,11 +1947,8 @@ MOTUS__KI void motus__group_finish(const motus__job *j, motus__group *g, const i
             }                                                                                                    \
             if (s == j->substeps) motus__group_finish(j, &g, dims, contiguous, shape);                           \
         }                                                                                                        \
-        if (end_here < end) broken = motus__general_##method(j, end_here, end);                                  \
+        if (end_here < end) broken = motus__general(j, end_here, end);                                           \
         return broken | !motus_real_is_finite(motus__lane_sum(check[0] + check[1] + check[2]));                  \
-    }                                                                                                            \
-    static int motus__general_##method(const motus__job *j, int first, int end) {                                \
-        return motus__kernel_##method(j, first, end, 3, 0, 1, MOTUS__SHAPE_ANY);                                 \
     }                                                                                                            \
     MOTUS__FASTS(method)
 #if MOTUS__FAST_KERNELS
@@ -1966,16 +1964,27 @@ MOTUS__KI void motus__group_finish(const motus__job *j, motus__group *g, const i
 #else
 #define MOTUS__FASTS(method)
 #endif
-#define MOTUS__DECLARE_GENERAL(method) static int motus__general_##method(const motus__job *j, int first, int end);
-MOTUS__DECLARE_GENERAL(semi_implicit_euler)
-MOTUS__DECLARE_GENERAL(explicit_euler)
-MOTUS__DECLARE_GENERAL(position_verlet)
-MOTUS__DECLARE_GENERAL(velocity_verlet)
-MOTUS__DECLARE_GENERAL(leapfrog)
-MOTUS__DECLARE_GENERAL(midpoint)
-MOTUS__DECLARE_GENERAL(rk4)
-MOTUS__DECLARE_GENERAL(forest_ruth)
-MOTUS__DECLARE_GENERAL(exact_linear_drag)
+/* The general kernel (any stride, coupling, the dry run, the fast kernels' last partial group) runs every
+   method: one kernel whose group of particles goes through the scene's method by a switch, a predictable
+   jump per group next to strided loads. Its loads, stores, walls and checks are then compiled once, not
+   once per method, and the unit compiles faster. The same code, inlined the same way, as the fast
+   kernels: the same bits. */
+MOTUS__KI int motus__any_method(MOTUS__METHOD_ARGS) {
+#define MOTUS__CALL(name) motus__##name(j, x, v, base, inverse_mass, movable, dims, coupled, shape, i, n)
+    switch (j->method) {
+    case MOTUS_EXPLICIT_EULER: return MOTUS__CALL(explicit_euler);
+    case MOTUS_POSITION_VERLET: return MOTUS__CALL(position_verlet);
+    case MOTUS_VELOCITY_VERLET: return MOTUS__CALL(velocity_verlet);
+    case MOTUS_LEAPFROG: return MOTUS__CALL(leapfrog);
+    case MOTUS_MIDPOINT: return MOTUS__CALL(midpoint);
+    case MOTUS_RK4: return MOTUS__CALL(rk4);
+    case MOTUS_FOREST_RUTH: return MOTUS__CALL(forest_ruth);
+    case MOTUS_EXACT_LINEAR_DRAG: return MOTUS__CALL(exact_linear_drag);
+    default: return MOTUS__CALL(semi_implicit_euler);
+    }
+#undef MOTUS__CALL
+}
+static int motus__general(const motus__job *j, int first, int end);
 MOTUS__KERNEL_OF(semi_implicit_euler)
 MOTUS__KERNEL_OF(explicit_euler)
 MOTUS__KERNEL_OF(position_verlet)
@@ -1985,9 +1994,14 @@ MOTUS__KERNEL_OF(midpoint)
 MOTUS__KERNEL_OF(rk4)
 MOTUS__KERNEL_OF(forest_ruth)
 MOTUS__KERNEL_OF(exact_linear_drag)
+#undef MOTUS__FASTS
+#define MOTUS__FASTS(method)
+MOTUS__KERNEL_OF(any_method)
+static int motus__general(const motus__job *j, int first, int end) {
+    return motus__kernel_any_method(j, first, end, 3, 0, 1, MOTUS__SHAPE_ANY);
+}
 #undef MOTUS__KERNEL_OF
 #undef MOTUS__FAST
-#undef MOTUS__DECLARE_GENERAL
 
 /* The kernel for a method: fast for 2D or 3D plain arrays without coupling, else general. In the order of
    motus_method (MOTUS__METHODS). */
@@ -1997,7 +2011,7 @@ static motus__kernel_function motus__kernel_for(motus_method method, int dims, u
 #define MOTUS__ROW(name)                                                                                         \
     {motus__fast2_0_##name, motus__fast2_1_##name, motus__fast2_2_##name, motus__fast2_3_##name,                 \
      motus__fast3_0_##name, motus__fast3_1_##name, motus__fast3_2_##name, motus__fast3_3_##name,                 \
-     motus__general_##name},
+     motus__general},
     static const motus__kernel_function kernels[MOTUS_METHOD_COUNT][9] = {
         MOTUS__ROW(semi_implicit_euler) MOTUS__ROW(explicit_euler) MOTUS__ROW(position_verlet)
         MOTUS__ROW(velocity_verlet) MOTUS__ROW(leapfrog) MOTUS__ROW(midpoint) MOTUS__ROW(rk4)
@@ -2009,16 +2023,11 @@ static motus__kernel_function motus__kernel_for(motus_method method, int dims, u
                     : exact == MOTUS__SHAPE_GRAVITY_DRAG ? 3 : 0;
     return kernels[method][general ? 8 : (dims - 2) * 4 + shape];
 #else
-#define MOTUS__ROW(name) motus__general_##name,
-    static const motus__kernel_function kernels[MOTUS_METHOD_COUNT] = {
-        MOTUS__ROW(semi_implicit_euler) MOTUS__ROW(explicit_euler) MOTUS__ROW(position_verlet)
-        MOTUS__ROW(velocity_verlet) MOTUS__ROW(leapfrog) MOTUS__ROW(midpoint) MOTUS__ROW(rk4)
-        MOTUS__ROW(forest_ruth) MOTUS__ROW(exact_linear_drag)};
-#undef MOTUS__ROW
+    (void)method;
     (void)dims;
     (void)terms;
     (void)general;
-    return kernels[method];
+    return motus__general;
 #endif
 }
 
@@ -2299,6 +2308,7 @@ static void motus__job_init(motus__job *j, const motus_scene *scene, const motus
     while (n > 1 && !(dt / (motus_real)n > 0)) --n;
     h = dt / (motus_real)n;
     j->dims = dims;
+    j->method = scene->method;
     j->substeps = n;
     j->record_stage = -1;
     j->apply_damping = 1;
