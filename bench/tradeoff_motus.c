@@ -25,7 +25,7 @@
 typedef struct batch {
     problem problem;
     motus_real *x, *y, *vx, *vy;
-    motus_spring *springs; /* one spring per particle for the oscillators: each copy has its own anchor spring */
+    motus_spring *springs; /* a problem posed with a spring (problem_use_spring): one per copy, to its anchor */
     motus_scene scene;
     motus_state state;
     void *scratch;

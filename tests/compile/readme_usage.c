@@ -3,6 +3,7 @@
 #define MOTUS_IMPLEMENTATION
 #include "motus.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -52,6 +53,23 @@ static motus_result pile(motus_particle *balls, int count, motus_real dt) {
     return r;
 }
 
+/* The README's tether snippet, the mouse at (600, 200): the balls end on it. */
+static int GetMouseX(void) { return 600; } /* raylib's, here a mouse that does not move */
+static int GetMouseY(void) { return 200; }
+static motus_result follow_the_mouse(motus_particle *balls, int count, motus_real dt) {
+    motus_scene scene = {0};
+    motus_state state = motus_state_of_particles(balls, count);
+    motus_result r = MOTUS_OK;
+    int frame;
+    for (frame = 0; frame < 600 && r == MOTUS_OK; ++frame) {
+        scene.tether = motus_v3(GetMouseX(), GetMouseY(), 0);   /* every frame: the spring's fixed end */
+        scene.tether_stiffness = 20;                            /* N/m: w = sqrt(k/m) rad/s */
+        scene.linear_drag = 2;                                  /* 1/s: settles instead of orbiting for ever */
+        r = motus_step(&scene, &state, dt, NULL, 0);
+    }
+    return r;
+}
+
 int main(void) {
     motus_particle ball = textbook(1.0f / 60.0f), balls[3];
     int i, bad = 0;
@@ -63,6 +81,9 @@ int main(void) {
     bad |= pile(balls, 3, 1.0f / 60.0f) != MOTUS_OK;
     bad |= balls[2].position.y != 450 - 8 || balls[2].velocity.y != 0; /* the lowest: at rest on the floor */
     bad |= !(balls[0].position.y < 450 - 8 - 31.9f);                      /* two balls up: on top, not inside */
+    bad |= follow_the_mouse(balls, 3, 1.0f / 60.0f) != MOTUS_OK;
+    for (i = 0; i < 3; ++i) /* 10 s at a decay rate of 1/s: within a px of the mouse */
+        bad |= !(fabs((double)balls[i].position.x - 600) < 1 && fabs((double)balls[i].position.y - 200) < 1);
     printf("%s: the >>usage snippets compile and run (x = %.3f, y = %.4f)\n", bad ? "FAILED" : "ok",
            (double)ball.position.x, (double)balls[2].position.y);
     return bad;
