@@ -2319,7 +2319,7 @@ static void motus__job_init(motus__job *j, const motus_scene *scene, const motus
         j->f[d] = state->force[d];
         j->gravity[d] = motus__splat(g[d] + 0); /* -0 as +0: every kernel then adds the same zero */
         j->attractor[d] = motus__splat(at[d]);
-        j->tether[d] = motus__splat(tether[d]);
+        j->tether[d] = motus__splat(tether[d] + 0); /* -0 as +0: x - tether then has one sign of zero */
         j->bounds_min[d] = motus__splat(lo[d]);
         j->bounds_max[d] = motus__splat(hi[d]);
         if (g[d] != 0) j->terms |= MOTUS__T_GRAVITY;
