@@ -137,10 +137,13 @@ void make_start(start &st, int dims, const std::string &scene, int n) {
         const int across = (int)std::floor((side - 2 * first) / spacing) + 1;
         for (int j = 0; placed < n; ++j)
             for (int a = 0; a < (dims == 3 ? across : 1) && placed < n; ++a)
-                for (int i = 0; i < across && placed < n; ++i)
-                    placed += put(placed, first + i * spacing + uniform(seed, -jitter, jitter),
-                        first + j * spacing + uniform(seed, -jitter, jitter),
-                        first + a * spacing + uniform(seed, -jitter, jitter));
+                for (int i = 0; i < across && placed < n; ++i) {
+                    // Drawn one statement at a time (the order of a call's arguments is up to the compiler:
+                    // g++ drew them z first, clang x first), z, y, x: g++'s order, the published starts.
+                    const double jz = uniform(seed, -jitter, jitter), jy = uniform(seed, -jitter, jitter),
+                                 jx = uniform(seed, -jitter, jitter);
+                    placed += put(placed, first + i * spacing + jx, first + j * spacing + jy, first + a * spacing + jz);
+                }
         for (int c = 0; c < dims; ++c)
             for (int i = 0; i < n; ++i) st.v[c][i] = uniform(seed, -1, 1);
     }
