@@ -24,6 +24,10 @@
         one another and come to rest in a      become walls the balls rest against at their radius, keeping
         pile on the floor                      30% of the speed; motus_step then needs scratch memory
                                               (motus_scratch_size bytes, allocated here when it grows)
+     T  tether: every particle on a spring    scene.tether (the pointer, each frame) and tether_stiffness, with
+        to the mouse pointer, the swarm       scene.linear_drag to calm the swirl: springs of rest length 0
+        swirls in and gathers there           that couple nothing (no scratch). Not with exact_linear_drag,
+                                              which takes no tether (the HUD says so; the drag stays)
      M  the next integrator                   scene.method (semi-implicit Euler first; all nine take this scene)
      R  reset: every particle back where it started (the same seeded start)
    and always: each particle's own mass (state.inverse_mass) and the window's edges, where particles bounce
@@ -36,7 +40,7 @@
    The step is a fixed dt = 1/60 s per frame, whatever the measured frame time: the motion depends on the
    number of frames only, so a run under a virtual X server (Xvfb), slow or not, ends where a real one does.
 
-   Keys: G, W, K, D, C toggle, M cycles the method, R resets (see above); Escape quits.
+   Keys: G, W, K, D, C, T toggle, M cycles the method, R resets (see above); Escape quits.
    Options, so that a script can drive it without a person (defaults: the interactive program):
      --frames N            stop after N frames (default: run until the window is closed or Escape)
      --particles N         how many, 1 to 65536 (default 5000)
@@ -46,6 +50,7 @@
      --random on|off
      --damping on|off
      --collisions on|off   (default off)
+     --tether on|off       (default off; the point is the mouse pointer, clamped to the window)
      --method NAME         the first method, by motus_method_name ("rk4"; default semi_implicit_euler)
      --screenshot FILE     save the last frame as a PNG
    On exit it prints one line: the scene it ended with (its terms that are on, and the method), how many key
@@ -55,9 +60,9 @@
    as drawn (found by motus_find_contacts whether collisions are on or not): how many pairs overlap, the
    largest overlap in px and as a share of the smaller radius of its pair, e.g.
      frames=300 particles=5000 scene=gravity|bounds|state.force|state.inverse_mass method=semi_implicit_euler
-     gravity=1 wind=0 random=1 damping=0 collisions=0 toggles=0 resets=0 steps=300 inside=5000 whole=5000
+     gravity=1 wind=0 random=1 damping=0 collisions=0 tether=0 tether_x=400.0 tether_y=300.0 toggles=0 resets=0 steps=300 inside=5000 whole=5000
      mean_x=... rms_speed=... overlaps=2716 max_overlap=8.102 overlap_ratio=1.000 us_per_step=40.5 fps=59.9
-   (one line). us_per_step (the moving average of the motus_step call) and fps (frames over the wall-clock
+   (one line; tether_x/y: the point of the last frame). us_per_step (the moving average of the motus_step call) and fps (frames over the wall-clock
    time of the run, drawing included; at most 60, the target) are measurements; every other number is the
    same on every run with the same options. */
 #define MOTUS_IMPLEMENTATION /* this file compiles the engine: motus_step */
@@ -82,6 +87,8 @@
 #define CONTACT_FRICTION 0.3f    /* with collisions: Coulomb coefficient between balls and on the walls */
 #define CONTACT_SUBSTEPS 2       /* with collisions: a pile 40 balls deep at 300 px/s^2 rests within 10% of a
                                     radius at 2 substeps (1: about 20%); see >>contacts in motus.h */
+#define TETHER_STIFFNESS 6.0f   /* N/px: a 1 kg particle swings about the pointer with a period of 2.6 s */
+#define TETHER_DRAG 1.2f        /* 1/s: linear drag with the tether, so that the swarm gathers (underdamped) */
 #define MIN_MASS 0.5f
 #define MAX_MASS 2.0f
 #define MAX_SPEED 120.0f         /* px/s: each starting velocity component is uniform in [-MAX_SPEED, MAX_SPEED] */
@@ -96,8 +103,8 @@
 #define FLAGS_TOP 48    /* the scene's terms: two rows of five columns */
 #define FLAG_ROW 18
 #define FLAG_LEFT 96
-#define FLAG_COLUMN 140
-#define FLAG_COLUMNS 5
+#define FLAG_COLUMN 116
+#define FLAG_COLUMNS 6
 #define BOTTOM_BAR_HEIGHT 26
 #define BACKGROUND CLITERAL(Color){10, 10, 16, 255}
 #define PANEL CLITERAL(Color){22, 22, 32, 215}
@@ -124,7 +131,7 @@ static float radius[MAX_PARTICLES];
 static Color colour[MAX_PARTICLES];
 
 typedef struct toggles {
-    int gravity, wind, random, damping, collisions;
+    int gravity, wind, random, damping, collisions, tether;
     motus_method method;
     long presses; /* key presses that changed something (R included) */
 } toggles;
@@ -141,6 +148,9 @@ typedef struct sandbox {
     int count;
     unsigned long seed;
     toggles on;
+    motus_vec3 tether_point; /* the mouse pointer in the window, px (the centre until it moves) */
+    Vector2 pointer_start;   /* where the pointer was when the window opened (raylib knows from frame 1) */
+    int pointer_polls, pointer_moved;
     motus_scene scene; /* rebuilt from `on` every frame */
     motus_state state; /* the arrays; state.force set only while a force is on */
     double us_per_step; /* moving average of the measured motus_step time */
@@ -214,7 +224,8 @@ static int parse_options(int argc, char **argv, options *out) {
                      (strcmp(name, "--wind") == 0 && parse_switch(value, &out->start.wind)) ||
                      (strcmp(name, "--random") == 0 && parse_switch(value, &out->start.random)) ||
                      (strcmp(name, "--damping") == 0 && parse_switch(value, &out->start.damping)) ||
-                     (strcmp(name, "--collisions") == 0 && parse_switch(value, &out->start.collisions)))) {
+                     (strcmp(name, "--collisions") == 0 && parse_switch(value, &out->start.collisions)) ||
+                     (strcmp(name, "--tether") == 0 && parse_switch(value, &out->start.tether)))) {
             return 0;
         }
     }
@@ -247,16 +258,26 @@ static void sandbox_init(sandbox *s, const options *opts) {
     s->seed = opts->seed;
     s->on = opts->start;
     s->on.presses = 0;
+    s->tether_point = motus_v3(WINDOW_WIDTH * 0.5f, WINDOW_HEIGHT * 0.5f, 0);
     sandbox_place(s);
 }
 
 /* The scene as the toggles say: a term left zero is work not done. */
-static motus_scene scene_from(const toggles *on) {
+static motus_scene scene_from(const toggles *on, motus_vec3 tether_point) {
     motus_scene scene;
     memset(&scene, 0, sizeof scene); /* zero: no forces */
     scene.method = on->method;
     if (on->gravity) scene.gravity = motus_v3(0, GRAVITY, 0);
     if (on->damping) scene.damping_per_second = DAMPING_PER_SECOND;
+    if (on->tether) {
+        /* F = -k*(x - pointer) on every particle, calmed by a linear drag; the exact method takes no tether
+           (motus_step would refuse the scene: MOTUS_ERROR_UNSUPPORTED), so it steps the drag alone */
+        scene.linear_drag = TETHER_DRAG;
+        if (on->method != MOTUS_EXACT_LINEAR_DRAG) {
+            scene.tether = tether_point;
+            scene.tether_stiffness = TETHER_STIFFNESS;
+        }
+    }
     scene.bounds_min = motus_v3(MAX_RADIUS, MAX_RADIUS, 0);
     scene.bounds_max = motus_v3(WINDOW_WIDTH - MAX_RADIUS, WINDOW_HEIGHT - MAX_RADIUS, 0);
     scene.restitution = RESTITUTION;
@@ -317,8 +338,22 @@ static void handle_keys(sandbox *s) {
     if (IsKeyPressed(KEY_K)) s->on.random = !s->on.random, ++s->on.presses;
     if (IsKeyPressed(KEY_D)) s->on.damping = !s->on.damping, ++s->on.presses;
     if (IsKeyPressed(KEY_C)) s->on.collisions = !s->on.collisions, ++s->on.presses;
+    if (IsKeyPressed(KEY_T)) s->on.tether = !s->on.tether, ++s->on.presses;
     if (IsKeyPressed(KEY_M)) s->on.method = (motus_method)((s->on.method + 1) % MOTUS_METHOD_COUNT), ++s->on.presses;
     if (IsKeyPressed(KEY_R)) sandbox_place(s), ++s->resets, ++s->on.presses;
+    /* the tether's point: the pointer, once it has moved from where it was when the window opened (so that
+       a scripted run that never moves it keeps the centre, wherever the X server put the pointer) */
+    if (s->pointer_polls < 2) {
+        s->pointer_start = GetMousePosition(), ++s->pointer_polls;
+    } else if (!s->pointer_moved) {
+        const Vector2 mouse = GetMousePosition();
+        s->pointer_moved = mouse.x != s->pointer_start.x || mouse.y != s->pointer_start.y;
+    }
+    if (s->pointer_moved) {
+        const Vector2 mouse = GetMousePosition();
+        s->tether_point.x = mouse.x < 0 ? 0 : mouse.x > WINDOW_WIDTH ? WINDOW_WIDTH : mouse.x;
+        s->tether_point.y = mouse.y < 0 ? 0 : mouse.y > WINDOW_HEIGHT ? WINDOW_HEIGHT : mouse.y;
+    }
 }
 
 /* Room for motus_step's scratch: none without collisions; with them, motus_scratch_size bytes (the contacts'
@@ -337,7 +372,7 @@ static int ensure_scratch(sandbox *s, const motus_scene *scene, const motus_stat
 static void sandbox_step(sandbox *s) {
     double start, us;
     motus_result result;
-    s->scene = scene_from(&s->on);
+    s->scene = scene_from(&s->on, s->tether_point);
     s->state = state_from(s);
     if (s->state.force[0]) fill_forces(s);
     if (!ensure_scratch(s, &s->scene, &s->state)) {
@@ -361,12 +396,12 @@ static void sandbox_step(sandbox *s) {
 
 /* ---- drawing -------------------------------------------------------------------------------------- */
 /* The terms of the scene and state the sandbox can switch on (and the ones it never does, shown unlit). */
-#define TERM_COUNT 10
+#define TERM_COUNT 11
 static void scene_terms(const motus_scene *scene, const motus_state *state, const char *names[TERM_COUNT],
                         int on[TERM_COUNT]) {
     static const char *const NAMES[TERM_COUNT] = {"gravity", "linear_drag", "quadratic_drag", "damping_per_step",
                                                   "damping_per_second", "attractor", "bounds", "state.force",
-                                                  "state.inverse_mass", "contacts"};
+                                                  "state.inverse_mass", "contacts", "tether"};
     int i;
     for (i = 0; i < TERM_COUNT; ++i) names[i] = NAMES[i];
     on[0] = scene->gravity.x != 0 || scene->gravity.y != 0;
@@ -380,6 +415,7 @@ static void scene_terms(const motus_scene *scene, const motus_state *state, cons
     on[7] = state->force[0] != NULL;
     on[8] = state->inverse_mass != NULL;
     on[9] = scene->contacts.enabled != 0; /* with state.radius */
+    on[10] = scene->tether_stiffness != 0;
 }
 
 /* "gravity|bounds|state.inverse_mass", or "none". */
@@ -434,7 +470,7 @@ static void draw_hud(const sandbox *s) {
     struct {
         const char *key, *what;
         int on;
-    } keys[5];
+    } keys[6];
     int i, x;
 
     DrawRectangle(0, 0, WINDOW_WIDTH, TOP_BAR_HEIGHT, PANEL);
@@ -465,14 +501,17 @@ static void draw_hud(const sandbox *s) {
     keys[2].key = "K", keys[2].what = "random kicks", keys[2].on = s->on.random;
     keys[3].key = "D", keys[3].what = "damping", keys[3].on = s->on.damping;
     keys[4].key = "C", keys[4].what = "collisions", keys[4].on = s->on.collisions;
+    keys[5].key = "T", keys[5].what = "tether to the mouse", keys[5].on = s->on.tether;
     DrawRectangle(0, WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT, WINDOW_WIDTH, BOTTOM_BAR_HEIGHT, PANEL);
     DrawLine(0, WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT, WINDOW_WIDTH, WINDOW_HEIGHT - BOTTOM_BAR_HEIGHT, RULE);
     x = 14;
-    for (i = 0; i < 5; ++i) {
+    for (i = 0; i < 6; ++i) {
         const char *label = TextFormat("[%s] %s %s", keys[i].key, keys[i].what, keys[i].on ? "on" : "off");
         DrawText(label, x, help_y, 10, keys[i].on ? LIT : TEXT_DIM);
-        x += MeasureText(label, 10) + 24;
+        x += MeasureText(label, 10) + 14;
     }
+    if (s->on.tether && s->scene.tether_stiffness == 0) /* the exact method: no tether */
+        DrawText("exact_linear_drag takes no tether: drag only", 14, TOP_BAR_HEIGHT + 6, 10, TEXT_BRIGHT);
     DrawText("[R] reset    ESC quit", WINDOW_WIDTH - 14 - MeasureText("[R] reset    ESC quit", 10), help_y, 10,
              TEXT_DIM);
 }
@@ -500,7 +539,7 @@ static overlaps find_overlaps(sandbox *s) {
     motus_contact_pair *pairs;
     int capacity = 4 * s->count, found = 0, k;
     colliding.collisions = 1;
-    scene = scene_from(&colliding);
+    scene = scene_from(&colliding, s->tether_point);
     state = state_from(s);
     state.radius = radius;
     for (;;) {
@@ -546,10 +585,10 @@ static void print_summary(sandbox *s, long frames, double seconds) {
     }
     terms_text(&s->scene, &s->state, terms, sizeof terms);
     printf("frames=%ld particles=%d scene=%s method=%s gravity=%d wind=%d random=%d damping=%d collisions=%d "
-           "toggles=%ld resets=%ld steps=%ld inside=%d whole=%d mean_x=%.3f mean_y=%.3f mean_vx=%.3f mean_vy=%.3f "
+           "tether=%d tether_x=%.1f tether_y=%.1f toggles=%ld resets=%ld steps=%ld inside=%d whole=%d mean_x=%.3f mean_y=%.3f mean_vx=%.3f mean_vy=%.3f "
            "rms_speed=%.3f overlaps=%ld max_overlap=%.4f overlap_ratio=%.5f us_per_step=%.3f fps=%.1f\n",
            frames, s->count, terms, motus_method_name(s->scene.method), s->on.gravity, s->on.wind, s->on.random,
-           s->on.damping, s->on.collisions, s->on.presses, s->resets, s->steps, inside, whole, sum_x / s->count,
+           s->on.damping, s->on.collisions, s->on.tether, s->tether_point.x, s->tether_point.y, s->on.presses, s->resets, s->steps, inside, whole, sum_x / s->count,
            sum_y / s->count, sum_vx / s->count, sum_vy / s->count, sqrt(sum_v2 / s->count), o.pairs, o.largest,
            o.largest_share, s->us_per_step, seconds > 0 ? frames / seconds : 0.0);
 }
@@ -563,13 +602,13 @@ int main(int argc, char **argv) {
     if (!parse_options(argc, argv, &opts)) {
         fprintf(stderr,
                 "usage: %s [--frames N] [--particles N] [--seed N] [--gravity on|off] [--wind on|off]\n"
-                "       [--random on|off] [--damping on|off] [--collisions on|off] [--method NAME]\n"
+                "       [--random on|off] [--damping on|off] [--collisions on|off] [--tether on|off] [--method NAME]\n"
                 "       [--screenshot FILE]\n",
                 argv[0]);
         return 2;
     }
     sandbox_init(&s, &opts);
-    s.scene = scene_from(&s.on); /* what the HUD and the summary show if no frame runs */
+    s.scene = scene_from(&s.on, s.tether_point); /* what the HUD and the summary show if no frame runs */
     s.state = state_from(&s);
 
     SetTraceLogLevel(LOG_WARNING);

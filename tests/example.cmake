@@ -28,10 +28,11 @@ if(TARGET orbits)
 endif()
 # The sandbox example: headless runs with gravity and wind on and off, checked on their printed means and on
 # the screenshot's colours, and under each method; with collisions on, a pile on the floor checked on its
-# printed overlaps (< 1% of a radius), speeds and extent; and G, W, K, D, M, R, C held as real keys, each
-# checked to change its switch (and the printed scene), the method or reset (C: and the pile it makes).
+# printed overlaps (< 1% of a radius), speeds and extent; and G, W, K, D, M, R, C, T held as real keys, each
+# checked to change its switch (and the printed scene), the method or reset (C: and the pile it makes; T: the
+# swarm gathered at the pointer).
 if(TARGET sandbox)
-  foreach(mode headless collisions methods key_g key_w key_k key_d key_m key_r key_c)
+  foreach(mode headless collisions methods key_g key_w key_k key_d key_m key_r key_c key_t)
     add_test(NAME example.sandbox_${mode}
       COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/example_sandbox.sh" $<TARGET_FILE:sandbox> ${mode}
               "${CMAKE_CURRENT_BINARY_DIR}/example")

@@ -24,7 +24,7 @@
 #             and its mean height is that of a pile on the floor (mean_y > 400 px: the balls' area fills the
 #             lower 300 px of the window); the same run with collisions off, as a control, has the balls
 #             overlapping (overlap_ratio > 0.5) and not resting.
-#   key_g, key_w, key_k, key_d, key_m, key_r, key_c
+#   key_g, key_w, key_k, key_d, key_m, key_r, key_c, key_t
 #             start with gravity, wind, damping and collisions off and random kicks on, hold the key with real
 #             key events (xdotool), then Escape: exactly one change, of that key's switch, and scene= follows it
 #             (G: gravity; W: wind on, state.force; K: kicks off and, without wind, no state.force; D:
@@ -32,6 +32,9 @@
 #             fewer steps since it than frames). C starts with gravity on and kicks off, and instead of Escape
 #             lets the run end after 600 frames: collisions=1, scene= names contacts, and the balls rest in a
 #             pile as in `collisions` (every ball whole inside the window, largest overlap below 20%).
+#             T first moves the pointer to (640, 150) in the window, and after the key waits 3 s: tether=1, the
+#             tether's point is the pointer (to 1 px), scene= names tether and linear_drag, and the swarm has
+#             gathered there against the kicks (its mean within 60 px of the point, from (400, 300)).
 set -eu
 binary=$1 mode=$2 out=$3
 for tool in xvfb-run python3; do
@@ -197,7 +200,7 @@ methods)
     done
     exit $failed
     ;;
-key_g | key_w | key_k | key_d | key_m | key_r | key_c)
+key_g | key_w | key_k | key_d | key_m | key_r | key_c | key_t)
     command -v xdotool >/dev/null 2>&1 || { echo "FAILED: xdotool is not installed (scripts/deps.sh installs it)"; exit 1; }
     key=${mode#key_}
     log="$out/sandbox_$mode.log"
@@ -211,9 +214,11 @@ key_g | key_w | key_k | key_d | key_m | key_r | key_c)
         window=$(timeout 30 xdotool search --sync --onlyvisible --name "^motus - sandbox\$" | head -n 1)
         if [ -z "$window" ]; then echo "the example opened no window"; kill $pid; exit 1; fi
         xdotool windowfocus --sync "$window"
+        if [ "$2" = t ]; then xdotool mousemove --window "$window" 640 150; fi
         sleep 0.3
         xdotool keydown "$2"; sleep 0.5; xdotool keyup "$2"
         sleep 0.5
+        if [ "$2" = t ]; then sleep 3; fi
         $5
         wait $pid' sh "$binary" "$key" "$log" "$start" "$last"
     cat "$log"
@@ -234,6 +239,14 @@ key_g | key_w | key_k | key_d | key_m | key_r | key_c)
         { echo "FAILED: M should move from semi_implicit_euler to the next method, explicit_euler"; exit 1; } ;;
     r) [ "$(field resets "$line")" = 1 ] && [ "$(field steps "$line")" -lt "$(field frames "$line")" ] ||
         { echo "FAILED: R should reset once, and the steps since be fewer than the frames"; exit 1; } ;;
+    t) [ "$(field tether "$line")" = 1 ] && has_flag tether "$line" && has_flag linear_drag "$line" ||
+        { echo "FAILED: T should switch the tether on, and scene= name tether and linear_drag"; exit 1; }
+       awk -v px="$(field tether_x "$line")" -v py="$(field tether_y "$line")" -v mx="$(field mean_x "$line")" \
+           -v my="$(field mean_y "$line")" 'BEGIN {
+           dx = mx - px; dy = my - py
+           printf "tether at (%.1f, %.1f), the swarm'"'"'s mean at (%.1f, %.1f)\n", px, py, mx, my
+           if (px < 639 || px > 641 || py < 149 || py > 151) { print "FAILED: the tether should be at the pointer, (640, 150)"; exit 1 }
+           if (dx * dx + dy * dy > 60 * 60) { print "FAILED: the swarm should have gathered within 60 px of the tether"; exit 1 } }' ;;
     c) [ "$(field collisions "$line")" = 1 ] && has_flag contacts "$line" ||
         { echo "FAILED: C should switch collisions on, and scene= name contacts"; exit 1; }
        check_pile "$line" ;;
@@ -241,7 +254,7 @@ key_g | key_w | key_k | key_d | key_m | key_r | key_c)
     echo "key $key: changed once, scene=$(field scene "$line") method=$(field method "$line")"
     ;;
 *)
-    echo "usage: $0 SANDBOX_BINARY headless|collisions|methods|key_g|key_w|key_k|key_d|key_m|key_r|key_c OUTPUT_DIR" >&2
+    echo "usage: $0 SANDBOX_BINARY headless|collisions|methods|key_g|key_w|key_k|key_d|key_m|key_r|key_c|key_t OUTPUT_DIR" >&2
     exit 2
     ;;
 esac
