@@ -549,23 +549,28 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      Coherence", GDC 2005; Box2D) over `iterations` sweeps of velocities: a pair within 1% of touching
      that approaches at vn < 0 gets the mass-weighted impulse that leaves -restitution*vn, or 0 below the
      restitution threshold (Box2D's rule, so that what rests does not hop); then Coulomb friction up to
-     friction times that impulse. Then as many sweeps of positions: each overlap removed along the normal
-     by inverse-mass shares, without touching velocities (split impulse / Box2D v2's non-linear
-     Gauss-Seidel position pass: the overlap goes without adding energy). The walls of the bounds are
-     contacts with an immovable plane at the particle's radius, same rules.
+     friction times that impulse. A resting contact keeps its impulse over the sweeps of a pass and only
+     the total is clamped at 0 (a ball in a V of two others is not thrown off it); a bounce is never
+     taken back. Nothing is kept between passes (no warm starting). Then as many sweeps of positions:
+     each overlap removed along the normal by inverse-mass shares, without touching velocities (split
+     impulse / Box2D v2's non-linear Gauss-Seidel position pass: the overlap goes without adding energy).
+     The walls of the bounds are contacts with an immovable plane at the particle's radius, same rules.
    - Piles: pairs are visited from the bottom up (a counting sort on height against gravity), and each
      phase ends with a support sweep (shock propagation: Guendelman, Bridson and Fedkiw, "Nonconvex rigid
      bodies with stacking", SIGGRAPH 2003): a particle resting on a wall, an immovable particle, or one
      resting on those counts as immovable for the particle above it (within 60 degrees of up), still
-     whichever way it moves; in the position sweep the upper one is lifted straight up out of it. One sweep
-     then carries a pile's whole weight, where plain Gauss-Seidel needs about as many sweeps as the pile
-     has rows: a 2,000-ball pile settles to overlaps of 4e-5 r (tests/contacts.c). Why not Box2D v3's soft
-     step (Catto's Solver2D comparison ranks it best for rigid bodies): it relies on warm starting, i.e.
-     contact impulses kept from the last step, and motus keeps no state between calls.
+     whichever way it moves; in the position sweep the upper one is lifted straight up out of it. A
+     particle's supports are solved together, a few passes with the impulse on each kept, and a gap within
+     4 ulps of the largest coordinate counts as touching there (a float pile 700 rows deep at 1,400 m blew
+     up otherwise). One sweep then carries a pile's whole weight, where plain Gauss-Seidel needs about as
+     many sweeps as the pile has rows: a 2,000-ball pile settles to overlaps of 3.4e-5 r and a kinetic
+     energy of 1e-20 of what it fell from (tests/contacts.c). Why not Box2D v3's soft step (Catto's
+     Solver2D comparison ranks it best for rigid bodies): it relies on warm starting, i.e. contact
+     impulses kept from the last step, and motus keeps no state between calls.
    - What it keeps: every impulse is equal and opposite (momentum kept to rounding) except where a wall or
      an immovable particle takes it; with restitution <= 1 the kinetic energy never grows (a sweep's
-     impulse brings one pair's approach to -e times itself, friction never reverses sliding, positions move
-     without velocity). So contacts do not lower any method's stable dt. A contact is resolved at the end
+     impulse brings one pair's approach to -e times itself, or takes back part of an earlier one to stop a
+     separation, friction never reverses sliding, positions move without velocity). So contacts do not lower any method's stable dt. A contact is resolved at the end
      of the substep in which it begins: across a collision every method is first order in time (between
      collisions each keeps its order). A particle that moves more than its radius in a substep can pass
      through a thin one: keep |v|*h below the radius (substeps).
@@ -2533,10 +2538,13 @@ typedef struct motus__contact_job {
     motus_real uniform_inverse_mass, uniform_radius;
     motus_real restitution, wall_restitution, threshold, friction, h;
     motus_real lo[3], hi[3];
-    motus_real inverse_cell, scale, inverse_scale; /* cell = 1/inverse_cell; scale: a power of two, radii ~ 1 */
+    motus_real inverse_cell, scale, inverse_scale;
+    motus_real rounding; /* m: a gap this small is a contact in the support sweep (4 ulps of the largest coordinate) */ /* cell = 1/inverse_cell; scale: a power of two, radii ~ 1 */
     int *cell[3], *sorted, *table, *order, *rank, *supported, *near_wall, near_walls, shock, up_axis;
     int half[14][3], half_count; /* the own cell, then the cells after it in (up, other axes) order */
     motus_real *geometry, *geometry_out; /* per listed pair: the normal and the depth when it was listed */
+    motus_real *impulse; /* per listed pair: its impulse so far in the velocity sweeps (the sort's spare buffer) */
+    int sweep;
     motus_contact_pair *pairs_sorted;
     motus_real *geometry_sorted;
     int *bins;
@@ -2552,6 +2560,7 @@ enum { MOTUS__PAIRS_RECORD, MOTUS__PAIRS_VELOCITY, MOTUS__PAIRS_POSITION };
 #define MOTUS__REACH MOTUS_R(1.1)
 #define MOTUS__TOUCH MOTUS_R(0.01)
 #define MOTUS__SUPPORT_PASSES 4
+#define MOTUS__SUPPORT_GROUP 16 /* supports of one particle solved with kept impulses (more: each pass clamped) */
 #define MOTUS__TOUCH_SUPPORT MOTUS_R(0.05) /* a ball in a random pile touches one support and may miss the next by a few % */
 
 static motus_real motus__contact_w(const motus__contact_job *j, int i) {
@@ -2649,6 +2658,9 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
         }
         if (near) j->near_wall[j->near_walls++] = i;
     }
+    /* 4 ulps of the largest coordinate: a gap below it is within the rounding of the positions (6.7e-4 m at
+       1,414 m in float, 2.4e-5 m at 50 m) */
+    j->rounding = largest_coordinate * (4 * MOTUS_REAL_EPSILON);
     if (!j->grid) return;
     cell = largest_radius * MOTUS_R(2.25); /* > 2 * MOTUS__REACH: room for rounding */
     /* a cell number below 2^17 in float (2^28 in double) has an ulp of 1/128 at most: touching particles
@@ -2748,7 +2760,8 @@ static int motus__overlap(const motus__contact_job *j, int a, int b, motus_real 
    tangential stop. Applied to the current velocities (Gauss-Seidel), so a chain (Newton's cradle) passes
    the momentum through in one sweep. Equal and opposite: momentum is kept to rounding; with e <= 1 the
    kinetic energy does not grow. */
-MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int b, const motus_real *n, motus_real depth) {
+MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int b, const motus_real *n, motus_real depth,
+                                    motus_real *accumulated) {
     const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
     const motus_real wb = motus__contact_w(j, b), gap = -depth;
     const motus_real sum = motus__contact_r(j, a) + motus__contact_r(j, b);
@@ -2764,7 +2777,11 @@ MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int 
     fast = vn < -j->threshold && !j->shock;
     if (fast ? !(gap <= 0) : (gap > (j->shock ? MOTUS__TOUCH_SUPPORT : MOTUS__TOUCH) * sum && !(gap <= -vn * j->h)))
         return;
-    allowed = gap > 0 ? -gap / j->h : 0;
+    /* In the support sweep a gap within the rounding of the coordinates is a contact (no approach allowed):
+       letting a particle fall into such a gap against a support taken as still fed the rounding of each
+       row's lift back into the next substep's gaps, and a float pile 700 rows deep at x = 1,400 m (ulp
+       1.2e-4 m) blew up within three substeps. Larger gaps close as in the other sweeps (nothing hovers). */
+    allowed = gap > (j->shock ? j->rounding : 0) ? -gap / j->h : 0;
     if (j->shock) {
         /* the last sweep: a particle resting on a support (a wall, an immovable particle, or a particle that
            rests on one) within 60 degrees of up is a support for the one above it (a neighbour in the same
@@ -2780,14 +2797,30 @@ MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int 
         for (d = 0; d < dims; ++d) support += j->v[d][pa] * n[d];
         vn += support; /* vn as against a still support */
     }
-    if (!(vn < allowed)) return; /* separating, or resting */
     target = fast ? -j->restitution * vn : allowed;
-    impulse = (target - vn) / w;
+    if (accumulated && *accumulated >= 0 && !fast) {
+        /* A resting contact keeps the impulse it has had in this pass, and its total is clamped at 0, not
+           each increment (projected Gauss-Seidel with accumulated impulses: Catto 2005). Clamped increments
+           leave a ball in a V of two supports 60 degrees apart thrown off them at a quarter of the speed the
+           substep's gravity gave it (0.0102 m/s at 9.81 m/s^2 and h = 1/240 s): a resting pile made energy
+           at every substep (a 2D pile 700 rows deep rose 0.1 m in 100 substeps). What is taken back only
+           stops a separation (vn down to 0, never an approach made): the kinetic energy still never grows. */
+        impulse = (target - vn) / w;
+        if (impulse < 0) impulse = vn > 0 ? -vn / w : 0;
+        if (*accumulated + impulse < 0) impulse = -*accumulated;
+        *accumulated += impulse;
+        if (impulse == 0) return;
+    } else {
+        if (!(vn < allowed)) return; /* separating, or resting */
+        impulse = (target - vn) / w;
+        /* a collision's bounce is never taken back: the pair takes only increments from now on */
+        if (accumulated && fast) *accumulated = -1;
+    }
     for (d = 0; d < dims; ++d) {
         j->v[d][pa] -= impulse * wa * n[d];
         j->v[d][pb] += impulse * wb * n[d];
     }
-    if (j->friction == 0) return;
+    if (j->friction == 0 || !(impulse > 0)) return; /* friction up to friction times an impulse given */
     /* the tangential part of the relative velocity: r - (r.n)n, with r.n summed over the components */
     {
         motus_real rn = 0;
@@ -2868,15 +2901,15 @@ static void motus__wall_contacts(motus__contact_job *j, int i, int action) {
 /* A near pair in a phase: impulses where they touch or will (see motus__pair_velocity), projection where
    they overlap. */
 MOTUS__KI void motus__pair_solve_in(motus__contact_job *j, int dims, int a, int b, int phase, const motus_real *n,
-                                    motus_real depth) {
+                                    motus_real depth, motus_real *accumulated) {
     if (phase == MOTUS__PAIRS_VELOCITY) {
-        motus__pair_velocity(j, dims, a, b, n, depth);
+        motus__pair_velocity(j, dims, a, b, n, depth, accumulated);
     } else if (depth > 0) {
         motus__pair_position(j, dims, a, b, n, depth);
     }
 }
 static void motus__pair_solve(motus__contact_job *j, int a, int b, int phase, const motus_real *n, motus_real depth) {
-    motus__pair_solve_in(j, j->dims, a, b, phase, n, depth);
+    motus__pair_solve_in(j, j->dims, a, b, phase, n, depth, NULL);
 }
 
 /* Particle i's contacts in its half of the neighbourhood: its own cell's particles after it (index order),
@@ -2949,11 +2982,17 @@ static void motus__sort_pairs(motus__contact_job *j) {
    solves without a loop over a run-time dims; the same operations in the same order, so the same bits). */
 MOTUS__KI void motus__sweep_listed(motus__contact_job *j, int phase, int dims) {
     size_t k, end;
+    motus_real accumulated[MOTUS__SUPPORT_GROUP];
+    /* the impulses of the listed pairs, kept over the sweeps of a pass (see motus__pair_velocity) */
+    for (k = 0; phase == MOTUS__PAIRS_VELOCITY && !j->shock && j->sweep == 0 && k < j->pair_count; ++k) j->impulse[k] = 0;
     for (k = 0; k < j->pair_count; k = end) {
         size_t m;
-        int local;
-        /* the support sweep: a particle's supports together, a few times (a ball in a V of two) */
+        int local, group;
+        /* the support sweep: a particle's supports together, a few times (a ball in a V of two), with the
+           impulse on each kept over the passes (see motus__pair_velocity) */
         for (end = k + 1; j->shock && end < j->pair_count && j->pairs[end].b == j->pairs[k].b;) ++end;
+        group = j->shock && end > k + 1 && end - k <= MOTUS__SUPPORT_GROUP;
+        for (m = 0; group && m < end - k; ++m) accumulated[m] = 0;
         for (local = 0; local < (j->shock && end > k + 1 ? MOTUS__SUPPORT_PASSES : 1); ++local)
             for (m = k; m < end; ++m) {
                 motus_real n[3], depth;
@@ -2962,9 +3001,10 @@ MOTUS__KI void motus__sweep_listed(motus__contact_job *j, int phase, int dims) {
                     /* positions do not move in this phase: the normal and depth of the listing hold */
                     const motus_real *g = j->geometry + 4 * m;
                     n[0] = g[0], n[1] = g[1], n[2] = g[2];
-                    motus__pair_solve_in(j, dims, a, b, phase, n, g[3]);
+                    motus__pair_solve_in(j, dims, a, b, phase, n, g[3],
+                                         group ? &accumulated[m - k] : j->shock ? NULL : j->impulse + m);
                 } else if (motus__overlap_in(j, dims, a, b, MOTUS__REACH, n, &depth)) {
-                    motus__pair_solve_in(j, dims, a, b, phase, n, depth);
+                    motus__pair_solve_in(j, dims, a, b, phase, n, depth, NULL);
                 }
             }
     }
@@ -3003,6 +3043,8 @@ static motus_result motus__contacts_pass(const motus_scene *scene, const motus_s
     for (phase = MOTUS__PAIRS_VELOCITY; phase <= MOTUS__PAIRS_POSITION; ++phase)
         for (sweep = 0; sweep < j->iterations + (MOTUS_CONTACT_SUPPORT_SWEEPS != 0); ++sweep) {
             j->shock = sweep == j->iterations;
+            j->sweep = sweep;
+            j->impulse = j->geometry_sorted; /* free once sorted (or never sorted) */
             for (i = 0; j->shock && phase == MOTUS__PAIRS_VELOCITY && i < j->count; ++i)
                 j->supported[i] = motus__contact_w(j, i) == 0;
             for (i = 0; (phase == MOTUS__PAIRS_VELOCITY || j->shock) && i < j->near_walls; ++i)
