@@ -2805,6 +2805,7 @@ MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int 
            substep's gravity gave it (0.0102 m/s at 9.81 m/s^2 and h = 1/240 s): a resting pile made energy
            at every substep (a 2D pile 700 rows deep rose 0.1 m in 100 substeps). What is taken back only
            stops a separation (vn down to 0, never an approach made): the kinetic energy still never grows. */
+        if (!(vn < allowed) && !(*accumulated > 0 && vn > 0)) return; /* nothing to give or take back */
         impulse = (target - vn) / w;
         if (impulse < 0) impulse = vn > 0 ? -vn / w : 0;
         if (*accumulated + impulse < 0) impulse = -*accumulated;
