@@ -570,10 +570,11 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
    - What it keeps: every impulse is equal and opposite (momentum kept to rounding) except where a wall or
      an immovable particle takes it; with restitution <= 1 the kinetic energy never grows (a sweep's
      impulse brings one pair's approach to -e times itself, or takes back part of an earlier one to stop a
-     separation, friction never reverses sliding, positions move without velocity). So contacts do not lower any method's stable dt. A contact is resolved at the end
-     of the substep in which it begins: across a collision every method is first order in time (between
-     collisions each keeps its order). A particle that moves more than its radius in a substep can pass
-     through a thin one: keep |v|*h below the radius (substeps).
+     separation, friction never reverses sliding, positions move without velocity). So contacts do not
+     lower any method's stable dt. A contact is resolved at the end of the substep in which it begins:
+     across a collision every method is first order in time (between collisions each keeps its order). A
+     particle that moves more than its radius in a substep can pass through a thin one: keep |v|*h below
+     the radius (substeps).
    - Deterministic: the order depends on the data only (heights, indices). Contacts run on the calling
      thread inside motus_step (motus_step_range refuses a scene with contacts). Cost per substep:
      O(N + pairs * iterations); motus_find_contacts gives the overlapping pairs for game logic.
@@ -2538,13 +2539,13 @@ typedef struct motus__contact_job {
     motus_real uniform_inverse_mass, uniform_radius;
     motus_real restitution, wall_restitution, threshold, friction, h;
     motus_real lo[3], hi[3];
-    motus_real inverse_cell, scale, inverse_scale;
-    motus_real rounding; /* m: a gap this small is a contact in the support sweep (4 ulps of the largest coordinate) */ /* cell = 1/inverse_cell; scale: a power of two, radii ~ 1 */
+    motus_real inverse_cell, scale, inverse_scale; /* cell = 1/inverse_cell; scale: a power of two, radii ~ 1 */
+    motus_real rounding; /* m: a gap this small is a contact in the support sweep (4 ulps of the largest
+                            coordinate) */
     int *cell[3], *sorted, *table, *order, *rank, *supported, *near_wall, near_walls, shock, up_axis;
     int half[14][3], half_count; /* the own cell, then the cells after it in (up, other axes) order */
     motus_real *geometry, *geometry_out; /* per listed pair: the normal and the depth when it was listed */
     motus_real *impulse; /* per listed pair: its impulse so far in the velocity sweeps (the sort's spare buffer) */
-    int sweep;
     motus_contact_pair *pairs_sorted;
     motus_real *geometry_sorted;
     int *bins;
@@ -2984,8 +2985,6 @@ static void motus__sort_pairs(motus__contact_job *j) {
 MOTUS__KI void motus__sweep_listed(motus__contact_job *j, int phase, int dims) {
     size_t k, end;
     motus_real accumulated[MOTUS__SUPPORT_GROUP];
-    /* the impulses of the listed pairs, kept over the sweeps of a pass (see motus__pair_velocity) */
-    for (k = 0; phase == MOTUS__PAIRS_VELOCITY && !j->shock && j->sweep == 0 && k < j->pair_count; ++k) j->impulse[k] = 0;
     for (k = 0; k < j->pair_count; k = end) {
         size_t m;
         int local, group;
@@ -3035,6 +3034,10 @@ static motus_result motus__contacts_pass(const motus_scene *scene, const motus_s
         }
         if (j->listed == j->count) motus__sort_pairs(j);
     }
+    /* the impulses of the listed pairs, kept over the velocity sweeps (see motus__pair_velocity), in the
+       sort's spare buffer (free once sorted, or never sorted) */
+    j->impulse = j->geometry_sorted;
+    for (k = 0; k < j->pair_count; ++k) j->impulse[k] = 0;
     /* Velocities: the walls first (a pile's floor stops its bottom row before the rows above meet it).
        Positions: the walls last (nothing leaves the box). Each phase ends with one more sweep that carries
        a pile's weight (shock propagation, Guendelman, Bridson and Fedkiw 2003): walls first, then each pair
@@ -3044,8 +3047,6 @@ static motus_result motus__contacts_pass(const motus_scene *scene, const motus_s
     for (phase = MOTUS__PAIRS_VELOCITY; phase <= MOTUS__PAIRS_POSITION; ++phase)
         for (sweep = 0; sweep < j->iterations + (MOTUS_CONTACT_SUPPORT_SWEEPS != 0); ++sweep) {
             j->shock = sweep == j->iterations;
-            j->sweep = sweep;
-            j->impulse = j->geometry_sorted; /* free once sorted (or never sorted) */
             for (i = 0; j->shock && phase == MOTUS__PAIRS_VELOCITY && i < j->count; ++i)
                 j->supported[i] = motus__contact_w(j, i) == 0;
             for (i = 0; (phase == MOTUS__PAIRS_VELOCITY || j->shock) && i < j->near_walls; ++i)
