@@ -60,10 +60,11 @@
    as drawn (found by motus_find_contacts whether collisions are on or not): how many pairs overlap, the
    largest overlap in px and as a share of the smaller radius of its pair, e.g.
      frames=300 particles=5000 scene=gravity|bounds|state.force|state.inverse_mass method=semi_implicit_euler
-     gravity=1 wind=0 random=1 damping=0 collisions=0 tether=0 tether_x=400.0 tether_y=300.0 toggles=0 resets=0 steps=300 inside=5000 whole=5000
+     gravity=1 wind=0 random=1 damping=0 collisions=0 tether=0 tether_x=400.0 tether_y=300.0 toggles=0
+     resets=0 steps=300 inside=5000 whole=5000
      mean_x=... rms_speed=... overlaps=2716 max_overlap=8.102 overlap_ratio=1.000 us_per_step=40.5 fps=59.9
-   (one line; tether_x/y: the point of the last frame). us_per_step (the moving average of the motus_step call) and fps (frames over the wall-clock
-   time of the run, drawing included; at most 60, the target) are measurements; every other number is the
+   (one line; tether_x/y: the point of the last frame). us_per_step (the moving average of the motus_step
+   call) and fps (frames over the wall-clock time of the run, drawing included; at most 60, the target) are measurements; every other number is the
    same on every run with the same options. */
 #define MOTUS_IMPLEMENTATION /* this file compiles the engine: motus_step */
 #include "motus.h"
@@ -100,7 +101,7 @@
 
 /* Layout: translucent bars over the particles. */
 #define TOP_BAR_HEIGHT 84
-#define FLAGS_TOP 48    /* the scene's terms: two rows of five columns */
+#define FLAGS_TOP 48    /* the scene's terms: two rows of six columns */
 #define FLAG_ROW 18
 #define FLAG_LEFT 96
 #define FLAG_COLUMN 116
@@ -343,14 +344,10 @@ static void handle_keys(sandbox *s) {
     if (IsKeyPressed(KEY_R)) sandbox_place(s), ++s->resets, ++s->on.presses;
     /* the tether's point: the pointer, once it has moved from where it was when the window opened (so that
        a scripted run that never moves it keeps the centre, wherever the X server put the pointer) */
-    if (s->pointer_polls < 2) {
-        s->pointer_start = GetMousePosition(), ++s->pointer_polls;
-    } else if (!s->pointer_moved) {
-        const Vector2 mouse = GetMousePosition();
-        s->pointer_moved = mouse.x != s->pointer_start.x || mouse.y != s->pointer_start.y;
-    }
+    const Vector2 mouse = GetMousePosition();
+    if (s->pointer_polls < 2) s->pointer_start = mouse, ++s->pointer_polls;
+    else if (mouse.x != s->pointer_start.x || mouse.y != s->pointer_start.y) s->pointer_moved = 1;
     if (s->pointer_moved) {
-        const Vector2 mouse = GetMousePosition();
         s->tether_point.x = mouse.x < 0 ? 0 : mouse.x > WINDOW_WIDTH ? WINDOW_WIDTH : mouse.x;
         s->tether_point.y = mouse.y < 0 ? 0 : mouse.y > WINDOW_HEIGHT ? WINDOW_HEIGHT : mouse.y;
     }
