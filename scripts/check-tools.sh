@@ -32,7 +32,9 @@ parts=("$@")
 # - compile.{gcc,clang,g++,clang++,tcc}.*, compile.fast_math_message.*: the warning matrix and the
 #   -ffast-math message (the programs they run, the unit tests run sanitized).
 # - consumer.*: CMake consumer projects built against the installed package, which carries no sanitizer.
-asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|clang\+\+|tcc|fast_math_message)\.|consumer\.)'
+# - threads.tsan: tests/threads.c rebuilt with ThreadSanitizer, which does not mix with ASan (the normal
+#   tree runs it).
+asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|clang\+\+|tcc|fast_math_message)\.|consumer\.|threads\.tsan$)'
 # Tests valgrind does not run (ctest -E), each for a reason:
 # - compile.engine.native.*, compile.engine.agree.*, compile.engine.clang.*, bench.throughput_quick_run: they
 #   run -march=native binaries, which on an AVX-512 machine use instructions valgrind cannot decode (SIGILL).
@@ -51,10 +53,12 @@ asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|cla
 #   (2,304 scenes per method; 10^7 steps); they run under ASan. bench.*: the benchmarks' quick mode, run in
 #   build/ only (not sanitized either). contacts.*.pile_of_2000_settles: 2,400 contact passes over 2,000
 #   balls per dimension (10 s natively, most of an hour under valgrind); the contact code runs under valgrind
-#   in the other contacts.* tests and the pile itself under ASan.
+#   in the other contacts.* tests and the pile itself under ASan. threads.*: thousands of balls per step on 2
+#   and 3 threads (valgrind runs one thread at a time: about an hour); they run under ASan, and under
+#   ThreadSanitizer in the normal tree (threads.tsan).
 # Script-driven tests (compile.gcc.* ...) run with --trace-children: valgrind follows the programs the script
 # starts from the build tree and skips system programs (compilers, shells' tools) by the skip patterns.
-valgrind_exclude='^(compile\.engine\.|determinism\.|consumer\.|example\.|bench\.|engine(_checked)?\.(float|double)\.paths_agree_|stability\.(float|double)\.ten_million_steps$|contacts\.[a-z_]+\.pile_of_2000_settles$)'
+valgrind_exclude='^(compile\.engine\.|determinism\.|consumer\.|example\.|bench\.|engine(_checked)?\.(float|double)\.paths_agree_|stability\.(float|double)\.ten_million_steps$|contacts\.[a-z_]+\.pile_of_2000_settles$|threads\.)'
 valgrind_options="--error-exitcode=1 --trace-children=yes --trace-children-skip=/usr/*,/bin/*,/sbin/* --leak-check=full --show-leak-kinds=definite --errors-for-leak-kinds=definite \
 --track-origins=yes --num-callers=30 --suppressions=$root/tests/support/valgrind.supp"
 

@@ -33,6 +33,12 @@
    step's overflow); walls at -Inf for bounds_max or +Inf for bounds_min (not generated). */
 #define MOTUS_IMPLEMENTATION
 #define MOTUS_STATIC
+/* Tasks of 4 particles and slabs from 8 particles, 2 cells wide: a scene of a few dozen particles reaches
+   every path that scene.parallel_for runs (the defaults start at 2,048 and 4,096). */
+#define MOTUS__TASK_MIN 4
+#define MOTUS_CONTACT_SLAB_MIN_COUNT 8
+#define MOTUS__SLAB_CELLS_2D 2
+#define MOTUS__SLAB_CELLS_3D 2
 #include "motus.h"
 
 #include <float.h>
@@ -239,6 +245,35 @@ typedef struct world {
     motus_real *radius;          /* per-particle radii at the state's stride, when the state has them */
 } world;
 
+/* scene.parallel_for on the calling thread: the tasks from the last to the first, or in ranges of 1-3
+   tasks in a shuffled order (motus's result may not depend on either). */
+static void reverse_for(void *context, motus_task_function task, void *task_context, int task_count) {
+    int t;
+    (void)context;
+    for (t = task_count - 1; t >= 0; --t) task(task_context, t, 1);
+}
+static void shuffled_for(void *context, motus_task_function task, void *task_context, int task_count) {
+    uint32_t *seed = (uint32_t *)context;
+    int first[MAX_PARTICLES + 1], count[MAX_PARTICLES + 1], ranges = 0, t = 0, k;
+    while (t < task_count && ranges < MAX_PARTICLES) {
+        *seed = *seed * 1664525u + 1013904223u;
+        first[ranges] = t;
+        count[ranges] = 1 + (int)((*seed >> 16) % 3);
+        if (count[ranges] > task_count - t) count[ranges] = task_count - t;
+        t += count[ranges++];
+    }
+    if (t < task_count) first[ranges] = t, count[ranges++] = task_count - t;
+    for (k = ranges - 1; k > 0; --k) {
+        int j, swap;
+        *seed = *seed * 1664525u + 1013904223u;
+        j = (int)((*seed >> 16) % (uint32_t)(k + 1));
+        swap = first[k], first[k] = first[j], first[j] = swap;
+        swap = count[k], count[k] = count[j], count[j] = swap;
+    }
+    for (k = 0; k < ranges; ++k) task(task_context, first[k], count[k]);
+}
+static uint32_t shuffle_seed = 1;
+
 static void force_callback(void *user_data, const motus_force_query *q) {
     callback_model *m = (callback_model *)user_data;
     int i, d;
@@ -322,8 +357,11 @@ static void read_scene(world *w, reader *r) {
         s->force_callback = force_callback;
         s->user_data = &w->model;
     }
-    if (flags & 8192) { /* contacts, and the walls become contacts */
-        s->contacts.enabled = byte(r) % 8 != 0;
+    if (flags & 8192) { /* contacts, and the walls become contacts; stepped by one of the runners */
+        const unsigned k8 = byte(r);
+        s->contacts.enabled = k8 % 8 != 0;
+        s->parallel_for = (k8 / 8) % 3 == 0 ? NULL : (k8 / 8) % 3 == 1 ? reverse_for : shuffled_for;
+        s->parallel_context = &shuffle_seed;
         s->contacts.radius = value(r, wild, MOTUS_R(1.0) / 64, 0);
         s->contacts.restitution = value(r, wild, MOTUS_R(1.0) / 254, 0);
         s->contacts.restitution_threshold = value(r, wild, MOTUS_R(1.0) / 64, 0);
