@@ -24,6 +24,8 @@ typedef struct cb_scene {
     double dt;             /* s per frame (per step call) */
     int substeps;          /* motus and brute force: substeps per frame */
     int iterations;        /* motus and brute force: solver sweeps per substep */
+    int threads;           /* motus: threads of scene.parallel_for (tests/support/motus_pool.h); 0: none, the
+                              calling thread alone. The peers ignore it (they run on one thread). */
     double box_min[3], box_max[3]; /* walls; box_max[1] is +Inf (open top); [2] unused in 2D */
     const double *x[3], *v[3];     /* the start: positions and velocities, [2] NULL in 2D */
 } cb_scene;

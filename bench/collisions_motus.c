@@ -1,12 +1,16 @@
 /* collisions_motus.c - motus on the scenes of bench/collisions: motus_step with scene.contacts on (radius r,
    restitution 0, friction 0, the default iterations), the box as scene.bounds (open top: bounds_max.y = +Inf;
    walls with restitution 0 are contact walls at the radius), 4 substeps a frame, the state as plain arrays of
-   motus_real (float, the default), scratch of motus_scratch_size() allocated once in create (untimed).
+   motus_real (float, the default), scratch of motus_scratch_size() allocated once in create (untimed). With
+   cb_scene.threads >= 1, scene.parallel_for is motus_pool_for of tests/support/motus_pool.h with a pool of that
+   many threads (the calling one included), started in create and stopped in destroy (both untimed).
    bench/CMakeLists.txt builds this file only when include/motus.h declares motus_contacts (CB_HAVE_MOTUS). */
 #define MOTUS_IMPLEMENTATION
 #define MOTUS_STATIC
 #include "motus.h"
 #include "collisions.h"
+#define MOTUS_POOL_IMPLEMENTATION
+#include "motus_pool.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -20,11 +24,14 @@ typedef struct motus_world {
     size_t scratch_bytes;
     motus_real dt;
     int n, dims;
+    motus_pool pool;
+    int pool_started;
 } motus_world;
 
 static void motus_world_destroy(void *world) {
     motus_world *w = (motus_world *)world;
     if (!w) return;
+    if (w->pool_started) motus_pool_stop(&w->pool);
     for (int k = 0; k < 6; ++k) free(w->arrays[k]);
     free(w->scratch);
     free(w);
@@ -76,6 +83,16 @@ static void *motus_world_create(const cb_scene *s) {
         motus_world_destroy(w);
         return NULL;
     }
+    if (s->threads >= 1) {
+        if (motus_pool_start(&w->pool, s->threads) != 0) {
+            fprintf(stderr, "collisions: motus_pool_start(%d threads) failed\n", s->threads);
+            motus_world_destroy(w);
+            return NULL;
+        }
+        w->pool_started = 1;
+        scene->parallel_for = motus_pool_for;
+        scene->parallel_context = &w->pool;
+    }
     return w;
 }
 
@@ -99,9 +116,11 @@ static void motus_world_read(void *world, double *x[3], double *v[3]) {
 }
 
 static const char *motus_world_describe(void) {
-    static char text[200];
+    static char text[400];
     snprintf(text, sizeof text, "motus %s, %s; motus_step, 4 substeps a frame, contacts.iterations default (4), "
-             "friction 0, restitution 0", MOTUS_VERSION_STRING, sizeof(motus_real) == 8 ? "double" : "float");
+             "friction 0, restitution 0; the calling thread alone, and at N = 10^5 also with scene.parallel_for "
+             "= motus_pool_for of tests/support/motus_pool.h, 1 and 2 threads", MOTUS_VERSION_STRING,
+             sizeof(motus_real) == 8 ? "double" : "float");
     return text;
 }
 

@@ -9,8 +9,11 @@
 # it needs and are missing (compilers, CMake, libbox2d-dev, libchipmunk-dev, libbullet-dev, gnuplot), builds
 # the `collisions` target in build-bench/ (-O2, no -march: the peers are Debian's -O2 builds), runs it and
 # writes into build-bench/collisions/:
-#   collisions.csv   engine,dims,scene,n,ms_per_step,max_overlap_over_r,ke_over_pe0,threads,note
-#   collisions.md    the tables, the targets of item 8 as measured, the machine and how busy it was (also
+#   collisions.csv   engine,dims,scene,n,ms_per_step,max_overlap_over_r,ke_over_pe0,threads,note (note
+#                    "parallel_for": motus again at N = 10^5 with scene.parallel_for, a pool of 1 and 2 threads
+#                    of tests/support/motus_pool.h)
+#   collisions.md    the tables, the targets of item 8 as measured (2 threads against 1 at 10^5, with the final
+#                    states of 1 and 2 threads compared bit for bit), the machine and how busy it was (also
 #                    printed on stdout; progress goes to stderr)
 #   collisions.png   ns per particle-step against N, one line per engine (2D, 3D; drop, pile)
 # and copies the figure to docs/collisions.png for the README. About 8-10 minutes on 2 cores; run it on an
