@@ -593,7 +593,8 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      the radius (substeps).
    - Deterministic: the order depends on the data only (heights, indices, cells), never on threads.
      Cost per substep: O(N + pairs * iterations); motus_find_contacts gives the overlapping pairs for game
-     logic.
+     logic. Memory: the scratch (motus_scratch_size), and about 19 KB of stack for the pass's job (the
+     tasks' tables; mind it on a fiber's small stack).
    - THREADS: with scene.parallel_for set, motus_step hands it the method's pass, the grid's scans and the
      pair search in tasks of 2,048 particles or more (each task lists its pairs into its own part of the
      list, and a stable sort joins them as one thread would have: the same bits as without parallel_for),
