@@ -36,12 +36,7 @@ typedef struct world {
 static world W, BEFORE;
 
 static uint32_t random_state = 1;
-static uint32_t random_next(void) {
-    random_state ^= random_state << 13;
-    random_state ^= random_state >> 17;
-    random_state ^= random_state << 5;
-    return random_state;
-}
+static uint32_t random_next(void) { return motus_test_xorshift32(&random_state); }
 static double random_unit(void) { return (double)(random_next() >> 8) / 16777216.0; }
 static motus_real random_real(double lo, double hi) { return (motus_real)(lo + (hi - lo) * random_unit()); }
 

@@ -45,12 +45,7 @@ enum { DAMP_NONE, DAMP_PER_STEP, DAMP_PER_SECOND, DAMP_KINDS };
 
 /* ---- random numbers: xorshift32, the same sequence in every build ---- */
 static uint32_t random_state = 1;
-static uint32_t random_next(void) {
-    random_state ^= random_state << 13;
-    random_state ^= random_state >> 17;
-    random_state ^= random_state << 5;
-    return random_state;
-}
+static uint32_t random_next(void) { return motus_test_xorshift32(&random_state); }
 static void random_seed(uint32_t seed) { random_state = seed * 2654435761u + 12345u; if (!random_state) random_state = 1; }
 static double random_unit(void) { return (double)(random_next() >> 8) / 16777216.0; }
 static motus_real random_real(double lo, double hi) { return (motus_real)(lo + (hi - lo) * random_unit()); }

@@ -40,12 +40,7 @@ typedef struct world {
 } world;
 
 static uint32_t random_state = 1;
-static uint32_t random_next(void) {
-    random_state ^= random_state << 13;
-    random_state ^= random_state >> 17;
-    random_state ^= random_state << 5;
-    return random_state;
-}
+static uint32_t random_next(void) { return motus_test_xorshift32(&random_state); }
 static double random_unit(void) { return (double)(random_next() >> 8) / 16777216.0; }
 
 /* n balls of radius 0.5 in a box `side` wide (and deep, in 3D), open at the top, gravity -10 along y;

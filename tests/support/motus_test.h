@@ -9,8 +9,18 @@
 #define MOTUS_TEST_H
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
+
+/* Random numbers for the tests: xorshift32 (Marsaglia, 2003) on the caller's state (not 0), the same
+   sequence in every build. */
+static inline uint32_t motus_test_xorshift32(uint32_t *state) {
+    *state ^= *state << 13;
+    *state ^= *state >> 17;
+    *state ^= *state << 5;
+    return *state;
+}
 
 static int motus_test_failures;
 
