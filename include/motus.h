@@ -3526,14 +3526,15 @@ static motus_result motus__step_substeps(const motus_scene *scene, const motus_s
     return MOTUS_OK;
 }
 
-/* The radii, before anything is written (a contact pass reads them at every substep). */
-static motus_result motus__radii_check(const motus_state *state) {
+/* The radii, before anything is written (a contact pass reads them at every substep). A bad one hands over to
+   the full check, so that the error named is the first in particle order, as motus_state_check names it (an
+   earlier particle's bad mass before a later one's bad radius). */
+static motus_result motus__radii_check(const motus_scene *scene, const motus_state *state) {
     const ptrdiff_t stride = state->stride == 0 ? 1 : state->stride;
     int i;
-    for (i = 0; i < state->count && state->radius; ++i) {
-        const motus_real r = state->radius[(ptrdiff_t)i * stride];
-        if (!motus__radius_valid(r)) return motus_real_is_finite(r) ? MOTUS_ERROR_INVALID_CONTACTS : MOTUS_ERROR_NOT_FINITE;
-    }
+    for (i = 0; i < state->count && state->radius; ++i)
+        if (!motus__radius_valid(state->radius[(ptrdiff_t)i * stride]))
+            return motus_state_check(scene, state, 0, state->count, NULL);
     return MOTUS_OK;
 }
 
@@ -3559,7 +3560,7 @@ MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *s
         return MOTUS_ERROR_SCRATCH_TOO_SMALL;
     if (count == 0) return MOTUS_OK;
     if (scene->contacts.enabled) {
-        result = motus__radii_check(state);
+        result = motus__radii_check(scene, state);
         if (result != MOTUS_OK) return result;
     }
     if (dt == 0) return motus_state_check(scene, state, 0, count, NULL);

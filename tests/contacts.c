@@ -477,6 +477,19 @@ TEST(bad_input_is_refused) {
         ENSURE_EQ_INT(step(MOTUS_R(0.1)), MOTUS_ERROR_NOT_FINITE);
         ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, sizeof W.scratch, W.pairs, 8, &found),
                       MOTUS_ERROR_NOT_FINITE);
+        /* an earlier particle's bad mass is named before a later one's NaN radius, as motus_state_check names
+           it, at any dt (a fuzz finding: the radii were checked first) */
+        {
+            const motus_real *inverse_mass = W.state.inverse_mass, kept = W.inverse_mass[1];
+            W.state.inverse_mass = W.inverse_mass;
+            W.inverse_mass[1] = -1;
+            ENSURE_EQ_INT(motus_state_check(&W.scene, &W.state, 0, 4, &report), MOTUS_ERROR_INVALID_MASS);
+            ENSURE(report.index == 1);
+            ENSURE_EQ_INT(step(MOTUS_R(0.1)), MOTUS_ERROR_INVALID_MASS);
+            ENSURE_EQ_INT(step(0), MOTUS_ERROR_INVALID_MASS);
+            W.inverse_mass[1] = kept;
+            W.state.inverse_mass = inverse_mass;
+        }
         W.radius[2] = MOTUS_R(0.5);
         /* scratch: too small, NULL, misaligned */
         ENSURE_EQ_INT(motus_step(&W.scene, &W.state, MOTUS_R(0.1), W.scratch, motus_scratch_size(&W.scene, &W.state) - 1),
