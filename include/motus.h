@@ -599,8 +599,9 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      pair search in tasks of 2,048 particles or more (each task lists its pairs into its own part of the
      list, and a stable sort joins them as one thread would have: the same bits as without parallel_for),
      and, from 4,096 particles, the sweeps in slabs: the cells across the first axis that is not up (x
-     under gravity along -y) are cut into 4 to 64 slabs of a power of two of cells, at least 16 in 2D and
-     4 in 3D. A pair belongs to the slab of its upper particle (its supports are then all in one task);
+     under gravity along -y) are cut into slabs as wide to a cell, at least 16 cells in 2D and 4 in 3D, as
+     many as fit up to 64, rounded down to a multiple of 12 (4 or 8 below 12): each colour has an even
+     number of slabs, which 2, 3, 4 or 6 threads share evenly. A pair belongs to the slab of its upper particle (its supports are then all in one task);
      each sweep solves the even slabs at once, then the odd ones. A pair's cells are at most one apart and
      a slab is at least 4 cells wide, so a slab's task touches only its own particles and the edge cells
      of its neighbours: the tasks of one call share no particle, and the bits do not depend on how the
@@ -2585,17 +2586,13 @@ MOTUS_API motus_result motus_step_range(const motus_scene *scene, const motus_st
 #ifndef MOTUS_CONTACT_SUPPORT_SWEEPS
 #define MOTUS_CONTACT_SUPPORT_SWEEPS 1
 #endif
-static void motus__serial_for(void *context, motus_task_function task, void *task_context, int task_count) {
-    (void)context;
-    if (task_count > 0) task(task_context, 0, task_count);
-}
-/* task over [0, task_count) on the scene's threads, or here */
+/* task over [0, task_count) on the scene's threads, or here (one task: no hand-over) */
 static void motus__for(const motus_scene *scene, motus_task_function task, void *task_context, int task_count) {
     if (task_count <= 0) return;
     if (scene->parallel_for && task_count > 1) scene->parallel_for(scene->parallel_context, task, task_context, task_count);
-    else motus__serial_for(NULL, task, task_context, task_count);
+    else task(task_context, 0, task_count);
 }
-/* How many particles a task takes (a multiple of 64: whole groups of lanes), and how many tasks. */
+/* How many particles a task takes (from 64 up, a multiple of 64: whole groups of lanes), and how many tasks. */
 static int motus__task_size(int count, int *tasks) {
     int size = count / MOTUS__TASKS + 1;
     if (size < MOTUS__TASK_MIN) size = MOTUS__TASK_MIN;
@@ -2632,11 +2629,11 @@ typedef struct motus__contact_job {
     int pairs_per_particle, tasks, task_size;
     size_t task_found[MOTUS__TASKS];
     size_t task_pairs[MOTUS__TASKS][MOTUS__SLABS];
-    /* Slabs (see THREADS in >>contacts): cell c across slab_axis is in slab (c - slab_low) >> slab_shift
-       (all 2^slab_shift cells wide but the last); task_of[i], the task of particle i's slab; the sorted
+    /* Slabs (see THREADS in >>contacts): cell c across slab_axis is in slab (c - slab_low) * slabs /
+       slab_extent (all as wide to a cell); task_of[i], the task of particle i's slab; the sorted
        pairs of the even slabs' tasks, then the odd ones', slab_start[] apart; the particles of task t are
        slab_first[t] .. slab_first[t + 1] - 1 in slab_rank */
-    int slab_axis, slab_low, slab_shift, slabs, even_slabs, *task_of;
+    int slab_axis, slab_low, slab_extent, slabs, even_slabs, *task_of;
     size_t slab_start[MOTUS__SLABS + 1];
     int slab_first[MOTUS__SLABS + 1], wall_start[MOTUS__SLABS + 1]; /* near_wall by slab task */
     unsigned char failed[MOTUS__TASKS];
@@ -2676,9 +2673,10 @@ static int motus__floor_int(motus_real q) {
     return (motus_real)t > q ? t - 1 : t;
 }
 
-/* Particle i's slab (0 .. slabs - 1). */
+/* Particle i's slab (0 .. slabs - 1): its cell's place in the extent, in slabs (integers: exact; the cells
+   below 2^30 apart, times 64 slabs at most). */
 static int motus__slab_of(const motus__contact_job *j, int i) {
-    return (j->cell[j->slab_axis][i] - j->slab_low) >> j->slab_shift;
+    return (int)((int64_t)(j->cell[j->slab_axis][i] - j->slab_low) * j->slabs / j->slab_extent);
 }
 /* The particles of task t: [*from, *to). */
 static void motus__task_range(const motus__contact_job *j, int t, int *from, int *to) {
@@ -2909,17 +2907,19 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
         if (high > low) j->to_bin = (motus_real)(l->table_size - 1) / (high - low);
         if (!motus_real_is_finite(j->to_bin)) j->to_bin = 0;
         j->bin_count = (int)l->table_size;
-        /* The slabs: across the first axis that is not up, so that a pile's columns stay in one slab; the
-           fewest cells a power of two (a shift per particle, exact) at least MOTUS__SLAB_CELLS_2D (3D) wide
-           that makes at most MOTUS__SLABS of them; only the last may be narrower; at least 4 */
+        /* The slabs: across the first axis that is not up, so that a pile's columns stay in one slab; as
+           many as are at least MOTUS__SLAB_CELLS_2D (3D) cells wide, at most MOTUS__SLABS, rounded down to a
+           multiple of 12 (from 12 up; else of 4), all as wide to a cell. Each colour then has an even number
+           of slabs of about one weight, which 2, 3, 4 or 6 threads share evenly (13 slabs of 4 cells, the
+           last of one, had 2 threads take 4 and 3 of the 7 even ones: 1.59x one thread on a 3D pile) */
         if (count >= MOTUS_CONTACT_SLAB_MIN_COUNT && scene->parallel_for) {
             const int extent = slab_extent[1] - slab_extent[0] + 1; /* cell numbers: below 2^29 in magnitude */
             const int least = dims == 3 ? MOTUS__SLAB_CELLS_3D : MOTUS__SLAB_CELLS_2D;
-            int shift = 0;
-            while ((1 << shift) < least || ((extent - 1) >> shift) + 1 > MOTUS__SLABS) ++shift;
-            if (((extent - 1) >> shift) + 1 >= 4) {
-                j->slabs = ((extent - 1) >> shift) + 1, j->even_slabs = (j->slabs + 1) / 2;
-                j->slab_low = slab_extent[0], j->slab_shift = shift;
+            int slabs = extent / least < MOTUS__SLABS ? extent / least : MOTUS__SLABS;
+            slabs = slabs >= 12 ? slabs / 12 * 12 : slabs / 4 * 4;
+            if (slabs >= 4) {
+                j->slabs = slabs, j->even_slabs = slabs / 2;
+                j->slab_low = slab_extent[0], j->slab_extent = extent;
             }
         }
         motus__for(scene, motus__bins_task, j, j->tasks); /* each particle's bin, in rank; its slab's task */
@@ -2962,9 +2962,8 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
    (split between two tasks, a ball in a V of two supports on a slab border was thrown off one, and a 2D
    pile of 6,000 never came to rest: 1.5% overlaps). A pair's cells are at most one apart, so its lower
    particle is in the same slab or on the edge of a neighbour. */
-static int motus__slab_task(const motus__contact_job *j, int a, int b) {
-    (void)a;
-    return j->slabs <= 1 ? 0 : motus__particle_task(j, b);
+static int motus__pair_task(const motus__contact_job *j, int upper) {
+    return j->slabs <= 1 ? 0 : motus__particle_task(j, upper);
 }
 
 /* Are a and b nearer than `reach` times the sum of their radii (1: overlapping)? If so, the unit normal from
@@ -3221,7 +3220,7 @@ static void motus__scatter_task(void *context, int first, int count) {
         const size_t base = motus__task_base(j, t);
         size_t *next = j->task_pairs[t];
         for (k = base; k < base + j->task_found[t]; ++k) {
-            const size_t to = next[motus__slab_task(j, j->pairs[k].a, j->pairs[k].b)]++;
+            const size_t to = next[motus__pair_task(j, j->pairs[k].b)]++;
             j->pairs_sorted[to] = j->pairs[k];
             for (d = 0; d < 4; ++d) j->geometry_sorted[4 * to + (size_t)d] = j->geometry[4 * k + (size_t)d];
         }
@@ -3369,7 +3368,7 @@ static void motus__record_task(void *context, int first, int count) {
         j->task_found[t] = found;
         for (k = 0; k < j->slabs; ++k) j->task_pairs[t][k] = 0;
         for (k = 0; found <= room && k < (int)found; ++k)
-            ++j->task_pairs[t][motus__slab_task(j, j->pairs[base + (size_t)k].a, j->pairs[base + (size_t)k].b)];
+            ++j->task_pairs[t][motus__pair_task(j, j->pairs[base + (size_t)k].b)];
     }
 }
 
