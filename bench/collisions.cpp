@@ -1,7 +1,9 @@
 // collisions.cpp - bench/collisions (issue 12, item 8): balls in a box, motus against what a game programmer
 // would pick instead, in the same run and the same scene.
 //   collisions [--out DIR] [--quick] [--sizes N,N,...] [--engines a,b,...] [--dims 2,3] [--scenes drop,pile]
-//              [--cap S] [--run-cap S] [--run-limit S]
+//              [--cap S] [--run-cap S] [--run-limit S] [--substeps K]
+// Engines: motus (4 substeps a frame, or --substeps K), motus-1substep (motus at one step of dt a frame, the
+// work a peer does a frame), box2d, chipmunk (2D), bullet (3D), brute (N <= 10^4).
 // Scenes (collisions.h: every engine gets the same start, as doubles):
 //   drop  N balls of radius r = 0.5 m on a jittered grid of spacing 2.2 r above the floor of a box open at the
 //         top, each with a random velocity in [-1, 1] m/s per component (the same seed for every engine), fall
@@ -67,6 +69,7 @@ struct options {
     std::vector<std::string> engines, scenes = {"drop", "pile"};
     std::vector<int> dims = {2, 3};
     double cap = 2.0, run_cap = 40.0, run_limit = 150.0;
+    int substeps = 4; // motus's and the brute-force loop's substeps a frame (the peers take one step a frame)
 };
 
 struct frames {
@@ -94,7 +97,7 @@ uint64_t splitmix(uint64_t &s) {
 }
 double uniform(uint64_t &s, double lo, double hi) { return lo + (hi - lo) * (double)(splitmix(s) >> 11) / 9007199254740992.0; }
 
-void make_start(start &st, int dims, const std::string &scene, int n) {
+void make_start(start &st, int dims, const std::string &scene, int n, int substeps) {
     const double r = 0.5;
     cb_scene &s = st.scene;
     s = cb_scene{};
@@ -103,7 +106,7 @@ void make_start(start &st, int dims, const std::string &scene, int n) {
     s.r = r;
     s.g = 9.81;
     s.dt = 1.0 / 60;
-    s.substeps = 4;
+    s.substeps = substeps;
     s.iterations = 0;
     const int k = dims == 2 ? (int)std::ceil(std::sqrt(2.0 * n)) : (int)std::ceil(std::cbrt(2.0 * n));
     const double side = 2 * r * k;
@@ -306,10 +309,10 @@ row run(const cb_engine &e, const start &st, const std::string &scene, const opt
         out.note = "skipped: skipped at N = " + size_name(smaller->n);
         return out;
     }
-    // motus is what is measured: it runs at every size unless a step takes longer than 10 caps; a peer is
-    // skipped where its step would take longer than one cap (its own measured time at the size below, scaled
-    // linearly) or does.
-    const bool subject = std::string(e.name) == "motus";
+    // motus is what is measured (also at 1 substep): it runs at every size unless a step takes longer than 10
+    // caps; a peer is skipped where its step would take longer than one cap (its own measured time at the size
+    // below, scaled linearly) or does.
+    const bool subject = std::string(e.name) == "motus" || std::string(e.name) == "motus-1substep";
     const double cap = subject ? 10 * o.cap : o.cap;
     if (!subject && smaller && smaller->ms * 1e-3 * s.n / smaller->n > cap) {
         out.note = "skipped: predicted " + fmt("%.1f", smaller->ms * 1e-3 * s.n / smaller->n) + " s a step";
@@ -622,11 +625,20 @@ void write_outputs(const options &o, const std::vector<row> &rows, const std::ve
     } else {
         md << "At N = 10^4, motus against each peer: speed-up = the peer's time per step / motus's (target: at "
               "least 5x), and the largest overlap (target: motus's no worse).\n\n";
-        md << "| dims | scene | peer | peer ms | motus ms | speed-up | >= 5x | peer overlap | motus overlap | no worse |\n";
+        for (const char *subject : {"motus", "motus-1substep"}) {
+        if (std::string(subject) != "motus") {
+            if (!find(rows, subject, 2, "drop", 10000) && !find(rows, subject, 2, "pile", 10000) &&
+                !find(rows, subject, 3, "drop", 10000) && !find(rows, subject, 3, "pile", 10000))
+                continue;
+            md << "\nThe same at 1 substep a frame (motus-1substep: one step of dt a frame, the work a peer does a "
+                  "frame; motus's default above takes 4):\n\n";
+        }
+        md << "| dims | scene | peer | peer ms | " << subject << " ms | speed-up | >= 5x | peer overlap | " << subject
+           << " overlap | no worse |\n";
         md << "|---|---|---|---:|---:|---:|:-:|---:|---:|:-:|\n";
         for (int dims = 2; dims <= 3; ++dims)
             for (const char *scene : {"drop", "pile"}) {
-                const row *m = find(rows, "motus", dims, scene, 10000);
+                const row *m = find(rows, subject, dims, scene, 10000);
                 for (const char *peer : {"box2d", "chipmunk", "bullet", "brute"}) {
                     const row *p = find(rows, peer, dims, scene, 10000);
                     if (!m || !p) continue;
@@ -643,6 +655,7 @@ void write_outputs(const options &o, const std::vector<row> &rows, const std::ve
                        << (m->overlap <= p->overlap ? "yes" : "**no**") << " |\n";
                 }
             }
+        }
         md << "\nmotus's time per particle-step from N = 10^4 to 10^6 (target: grows at most 1.5x):\n\n";
         md << "| dims | scene | ns at 10^4 | ns at 10^6 | growth | <= 1.5x |\n|---|---|---:|---:|---:|:-:|\n";
         for (int dims = 2; dims <= 3; ++dims)
@@ -658,7 +671,7 @@ void write_outputs(const options &o, const std::vector<row> &rows, const std::ve
         md << "\nWhere a peer does better than motus (every size both ran):\n\n";
         int wins = 0;
         for (const row &p : rows) {
-            if (p.engine == "motus" || p.skipped()) continue;
+            if (p.engine == "motus" || p.engine == "motus-1substep" || p.skipped()) continue;
             const row *m = find(rows, "motus", p.dims, p.scene, p.n);
             if (!m || m->skipped()) continue;
             std::string what;
@@ -755,7 +768,7 @@ std::vector<std::string> split(const std::string &s) {
 
 int usage() {
     std::fprintf(stderr, "usage: collisions [--out DIR] [--quick] [--sizes N,N,...] [--engines a,b,...] [--dims 2,3] "
-                         "[--scenes drop,pile] [--cap S] [--run-cap S] [--run-limit S]\n");
+                         "[--scenes drop,pile] [--cap S] [--run-cap S] [--run-limit S] [--substeps K]\n");
     return 2;
 }
 
@@ -777,6 +790,7 @@ int main(int argc, char **argv) {
             for (const std::string &d : split(argv[++i])) o.dims.push_back(std::atoi(d.c_str()));
         }
         else if (a == "--cap" && has_value) o.cap = std::atof(argv[++i]);
+        else if (a == "--substeps" && has_value) o.substeps = std::atoi(argv[++i]);
         else if (a == "--run-cap" && has_value) o.run_cap = std::atof(argv[++i]);
         else if (a == "--run-limit" && has_value) o.run_limit = std::atof(argv[++i]);
         else return usage();
@@ -790,6 +804,7 @@ int main(int argc, char **argv) {
     std::vector<const cb_engine *> all = {
 #ifdef CB_HAVE_MOTUS
         &cb_engine_motus,
+        &cb_engine_motus_one_substep,
 #endif
 #ifdef CB_HAVE_BOX2D
         &cb_engine_box2d,
@@ -834,7 +849,7 @@ int main(int argc, char **argv) {
             for (int n : o.sizes) {
                 const char *scene = scene_name.c_str();
                 start st;
-                make_start(st, dims, scene, n);
+                make_start(st, dims, scene, n, o.substeps);
                 for (const cb_engine *e : engines) {
                     if (!(e->dims_mask & (1 << dims))) continue;
                     const row *smaller = nullptr;

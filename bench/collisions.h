@@ -46,6 +46,7 @@ typedef struct cb_engine {
 extern const cb_engine cb_engine_brute;
 #ifdef CB_HAVE_MOTUS
 extern const cb_engine cb_engine_motus;
+extern const cb_engine cb_engine_motus_one_substep; /* "motus-1substep": motus at 1 substep a frame */
 #endif
 #ifdef CB_HAVE_BOX2D
 extern const cb_engine cb_engine_box2d;

@@ -168,7 +168,7 @@ static void brute_read(void *world, double *x[3], double *v[3]) {
 static const char *brute_describe(void) {
     return "all N(N-1)/2 pairs tested once a substep; float; the plain model of COLLISIONS.md (Gauss-Seidel "
            "velocity impulses on touching pairs, then position projection; no contact reach or support sweep, "
-           "which motus's solver has), motus's substeps (4) and iterations (4)";
+           "which motus's solver has), motus's substeps (4, or --substeps K) and iterations (4)";
 }
 
 const cb_engine cb_engine_brute = {"brute", (1 << 2) | (1 << 3), 10000, brute_create, brute_step, brute_read,

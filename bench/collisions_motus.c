@@ -117,7 +117,7 @@ static void motus_world_read(void *world, double *x[3], double *v[3]) {
 
 static const char *motus_world_describe(void) {
     static char text[400];
-    snprintf(text, sizeof text, "motus %s, %s; motus_step, 4 substeps a frame, contacts.iterations default (4), "
+    snprintf(text, sizeof text, "motus %s, %s; motus_step, 4 substeps a frame (or --substeps K), contacts.iterations default (4), "
              "friction 0, restitution 0; the calling thread alone, and at N = 10^5 also with scene.parallel_for "
              "= motus_pool_for of tests/support/motus_pool.h, 1 and 2 threads", MOTUS_VERSION_STRING,
              sizeof(motus_real) == 8 ? "double" : "float");
@@ -126,3 +126,19 @@ static const char *motus_world_describe(void) {
 
 const cb_engine cb_engine_motus = {"motus", (1 << 2) | (1 << 3), 0, motus_world_create, motus_world_step,
                                    motus_world_read, motus_world_destroy, motus_world_describe};
+
+/* motus at one substep a frame: one step of dt, the work a peer does a frame (at a larger overlap than 4
+   substeps give); the calling thread alone. */
+static void *motus_one_substep_create(const cb_scene *s) {
+    cb_scene one = *s;
+    one.substeps = 1;
+    one.threads = 0;
+    return motus_world_create(&one);
+}
+static const char *motus_one_substep_describe(void) {
+    return "motus as above at 1 substep a frame (one step of dt a frame, as the peers step), the calling thread "
+           "alone";
+}
+const cb_engine cb_engine_motus_one_substep = {"motus-1substep", (1 << 2) | (1 << 3), 0, motus_one_substep_create,
+                                               motus_world_step, motus_world_read, motus_world_destroy,
+                                               motus_one_substep_describe};
