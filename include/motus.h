@@ -611,8 +611,8 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      What the slabs cost: the order is no longer bottom-up across a slab border (a support in the odd slab
      beside an even one is solved after it; the support sweep takes it as resting, else a ball on the
      border was pushed off its V), so a step with parallel_for gives other bits than one without, and deep
-     2D piles rest less tightly: largest overlap 4.0e-4 r against 6.1e-5 r in a 2D pile of 10^5 balls
-     (224 rows), 1.37e-3 r against 1.62e-3 r in 3D; a 6,000-ball pile settles alike (with 4-cell slabs in
+     2D piles rest less tightly: largest overlap 2.0e-4 r against 6.1e-5 r in a 2D pile of 10^5 balls
+     (224 rows), 1.3e-3 r against 9.9e-4 r in 3D; a 6,000-ball pile settles alike (with 4-cell slabs in
      2D: 5.5e-4 r there, hence 16). Below 4,096 particles there are no slabs and the bits are the same with
      or without parallel_for. The hash table's and the heights' counting sorts stay on the calling thread.
      motus_step_range refuses a scene with contacts: a contact pass needs all the particles.
@@ -3126,10 +3126,8 @@ static void motus__wall_contacts(motus__contact_job *j, int i, int action) {
             const motus_real vn = e < 0 ? *v : -*v; /* along the wall's normal */
             motus_real target, change, t2 = 0, tangential, keep;
             int k;
-            /* touching counts: a ball the last projection left exactly against a side wall, pushed into it by
-               its support's impulse, kept that speed (the wall was not a contact), was put back by the
-               projection and lifted by its support, a little more each row up the wall: a frictionless 2D
-               pile 590 rows deep at one substep of 1/60 s gave way within three frames */
+            /* touching counts (the projection leaves a ball exactly against the wall; see the support sweep
+               in motus__sweep_listed) */
             if (!(e < 0 ? *x <= low : *x >= high)) continue;
             j->supported[i] = 1;
             if (!(vn < 0)) continue;
@@ -3148,6 +3146,15 @@ static void motus__wall_contacts(motus__contact_job *j, int i, int action) {
     }
 }
 
+/* Does particle i touch (or pass) a wall of the bounds? */
+static int motus__against_wall(const motus__contact_job *j, int i) {
+    const ptrdiff_t p = (ptrdiff_t)i * j->stride;
+    const motus_real r = motus__contact_r(j, i);
+    int d;
+    for (d = 0; d < j->dims; ++d)
+        if (j->x[d][p] - j->lo[d] <= r || j->hi[d] - j->x[d][p] <= r) return 1;
+    return 0;
+}
 /* A near pair in a phase: impulses where they touch or will (see motus__pair_velocity), projection where
    they overlap. */
 MOTUS__KI void motus__pair_solve_in(motus__contact_job *j, int dims, int a, int b, int phase, const motus_real *n,
@@ -3285,13 +3292,20 @@ MOTUS__KI void motus__sweep_listed(motus__contact_job *j, int phase, int dims, s
     motus_real accumulated[MOTUS__SUPPORT_GROUP];
     for (k = first; k < last; k = end) {
         size_t m;
-        int local, group;
+        int local, group, walled, several;
         /* the support sweep: a particle's supports together, a few times (a ball in a V of two), with the
            impulse on each kept over the passes (see motus__pair_velocity) */
         for (end = k + 1; j->shock && end < last && j->pairs[end].b == j->pairs[k].b;) ++end;
-        group = j->shock && end > k + 1 && end - k <= MOTUS__SUPPORT_GROUP;
+        /* and in the velocity sweep a wall the particle touches is one of its supports: solved before the
+           pairs only, the wall's stop was undone by the support's push (a ball in the corner of a side wall
+           and a support below it slid into the wall at every substep, the projection put it back and its
+           support lifted it, a little more each row up the wall: a frictionless 2D pile 590 rows deep at 1
+           substep of 1/60 s gave way within three frames) */
+        walled = j->shock && phase == MOTUS__PAIRS_VELOCITY && j->walls && motus__against_wall(j, j->pairs[k].b);
+        several = j->shock && (end > k + 1 || walled);
+        group = several && end - k <= MOTUS__SUPPORT_GROUP;
         for (m = 0; group && m < end - k; ++m) accumulated[m] = 0;
-        for (local = 0; local < (j->shock && end > k + 1 ? MOTUS__SUPPORT_PASSES : 1); ++local)
+        for (local = 0; local < (several ? MOTUS__SUPPORT_PASSES : 1); ++local) {
             for (m = k; m < end; ++m) {
                 motus_real n[3], depth;
                 const int a = j->pairs[m].a, b = j->pairs[m].b;
@@ -3305,6 +3319,8 @@ MOTUS__KI void motus__sweep_listed(motus__contact_job *j, int phase, int dims, s
                     motus__pair_solve_in(j, dims, a, b, phase, n, depth, NULL);
                 }
             }
+            if (walled) motus__wall_contacts(j, j->pairs[k].b, phase);
+        }
     }
 }
 static MOTUS__NOINLINE void motus__sweep_listed_2(motus__contact_job *j, int phase, size_t first, size_t last) {
