@@ -601,8 +601,9 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      and, from 4,096 particles, the sweeps in slabs: the cells across the first axis that is not up (x
      under gravity along -y) are cut into slabs as wide to a cell, at least 16 cells in 2D and 4 in 3D, as
      many as fit up to 64, rounded down to a multiple of 12 (4 or 8 below 12): each colour has an even
-     number of slabs, which 2, 3, 4 or 6 threads share evenly. A pair belongs to the slab of its upper particle (its supports are then all in one task);
-     each sweep solves the even slabs at once, then the odd ones. A pair's cells are at most one apart and
+     number of slabs, which 2, 3, 4 or 6 threads share evenly. A pair belongs to the slab of its upper
+     particle (its supports are then all in one task); each sweep solves the even slabs at once, then the
+     odd ones. A pair's cells are at most one apart and
      a slab is at least 4 cells wide, so a slab's task touches only its own particles and the edge cells
      of its neighbours: the tasks of one call share no particle, and the bits do not depend on how the
      tasks are split, in what order they run, or on how many threads (Box2D v3 colours its constraint
