@@ -548,6 +548,193 @@ TEST(immovable_particles_are_obstacles) {
     }
 }
 
+/* Radii as an array of their own beside the particle structs (motus_state_of_particles: radius_stride 1,
+   though the structs' stride is 7 or 10 reals), and at a stride of their own: each particle gets its own
+   radius, read nowhere else (a radius read at the structs' stride ran past the array: ASan). Two balls of
+   radii 1 and 3, 3.5 apart along x, overlap by 0.5: one step pushes them exactly 4 apart. */
+TEST(radii_have_their_own_stride) {
+    int dims;
+    for (dims = 2; dims <= 3; ++dims) {
+        motus_particle p2[2];
+        motus_particle3 p3[2];
+        motus_real *radii = (motus_real *)malloc(2 * sizeof *radii), spaced[5] = {1, -7, -7, -7, 3};
+        motus_check_report report;
+        int i, layout;
+        ENSURE(radii != NULL);
+        radii[0] = 1, radii[1] = 3;
+        for (layout = 0; layout < 2; ++layout) {
+            motus_real gap;
+            world_init(dims, 2, 0);
+            if (dims == 2) {
+                for (i = 0; i < 2; ++i) ENSURE_EQ_INT(motus_particle_init(&p2[i], motus_v2(MOTUS_R(3.5) * (motus_real)i, 0), 1), MOTUS_OK);
+                W.state = motus_state_of_particles(p2, 2);
+            } else {
+                for (i = 0; i < 2; ++i)
+                    ENSURE_EQ_INT(motus_particle3_init(&p3[i], motus_v3(MOTUS_R(3.5) * (motus_real)i, 0, 0), 1), MOTUS_OK);
+                W.state = motus_state_of_particles3(p3, 2);
+            }
+            ENSURE_EQ_INT(W.state.radius_stride, 1);
+            W.state.radius = radii;
+            if (layout == 1) W.state.radius = spaced, W.state.radius_stride = 4;
+            ENSURE_EQ_INT(motus_state_check(&W.scene, &W.state, 0, 2, &report), MOTUS_OK);
+            ENSURE_EQ_INT(step(MOTUS_R(0.01)), MOTUS_OK);
+            gap = dims == 2 ? p2[1].position.x - p2[0].position.x : p3[1].position.x - p3[0].position.x;
+            ENSURE_NEAR(gap, 4, 8 * EPS);
+            /* a bad radius is named at its particle */
+            if (layout == 1) spaced[4] = -1;
+            else radii[1] = -1;
+            ENSURE_EQ_INT(motus_state_check(&W.scene, &W.state, 0, 2, &report), MOTUS_ERROR_INVALID_CONTACTS);
+            ENSURE(report.index == 1 && report.field == MOTUS_FIELD_RADIUS);
+            ENSURE_EQ_INT(step(MOTUS_R(0.01)), MOTUS_ERROR_INVALID_CONTACTS);
+            spaced[4] = 3, radii[1] = 3;
+            W.state.radius_stride = -1;
+            ENSURE_EQ_INT(motus_state_check(&W.scene, &W.state, 0, 2, &report), MOTUS_ERROR_INVALID_STRIDE);
+            ENSURE(strcmp(report.field_name, "state.radius_stride") == 0);
+        }
+        free(radii);
+    }
+}
+
+/* The largest overlap over every pair of the first n particles (brute force). */
+static double largest_overlap(int n) {
+    double largest = 0;
+    int i, k, d;
+    for (i = 0; i < n; ++i)
+        for (k = i + 1; k < n; ++k) {
+            const double sum = (double)(W.state.radius ? W.radius[i] + W.radius[k] : 2 * W.scene.contacts.radius);
+            double d2 = 0;
+            for (d = 0; d < W.state.dimensions; ++d) {
+                const double u = (double)W.x[d][k] - (double)W.x[d][i];
+                d2 += u * u;
+            }
+            if (sum - sqrt(d2) > largest) largest = sum - sqrt(d2);
+        }
+    return largest;
+}
+
+/* More balls in the floor's row than fit between the walls (what a frame hitch leaves when it presses a
+   pile into its floor: every ball clamped to the floor's height, side by side): they rise into a second
+   row, not press sideways for ever (100 balls where 79 fit kept overlaps of 0.8 r for 10 s). In 3D the row
+   runs along x in a box one ball deep in z. */
+TEST(overfull_row_rises) {
+    int dims;
+    for (dims = 2; dims <= 3; ++dims) {
+        const int n = 100;
+        int i, s;
+        world_init(dims, n, 5);
+        W.scene.gravity = motus_v3(0, -500, 0);
+        W.scene.bounds_min = motus_v3(0, 0, 0);
+        W.scene.bounds_max = motus_v3(800, (motus_real)HUGE_VAL, 10);
+        for (i = 0; i < n; ++i) {
+            W.x[0][i] = 5 + (motus_real)i * (MOTUS_R(790.0) / (motus_real)n);
+            W.x[1][i] = 5;
+            if (dims == 3) W.x[2][i] = 5;
+        }
+        for (s = 0; s < 600; ++s) ENSURE_EQ_INT(step(MOTUS_R(1.0) / 60), MOTUS_OK);
+        printf("  %dD: largest overlap after 10 s %.3g r (it starts at 0.42 r)\n", dims, largest_overlap(n) / 5);
+        ENSURE(largest_overlap(n) < 0.15 * 5);
+    }
+}
+
+/* One particle far away changes nothing near the origin: a ball dropped 0.06 m onto an immovable one lands
+   as it does alone, bit for bit (a far particle's coordinate set the rounding of every gap: it took 84
+   frames to land, not 6), and a pile with an immovable particle far above it settles (binned by height
+   over the lowest to the highest, the pile shared a bin or two and lost its bottom-up order: overlaps of
+   1.96 r). */
+TEST(far_particle_changes_nothing_nearby) {
+    int dims;
+    for (dims = 2; dims <= 3; ++dims) {
+        motus_real alone[60];
+        int far, s, i;
+        for (far = 0; far <= 1; ++far) {
+            world_init(dims, far ? 3 : 2, 1);
+            W.state.inverse_mass = W.inverse_mass;
+            W.inverse_mass[0] = 0, W.inverse_mass[1] = 1, W.inverse_mass[2] = 0;
+            W.x[1][1] = MOTUS_R(2.06);
+            W.x[0][2] = sizeof(motus_real) == sizeof(float) ? MOTUS_R(1e6) : (motus_real)1e15;
+            W.scene.gravity = motus_v3(0, -10, 0);
+            W.scene.substeps = 4;
+            for (s = 0; s < 60; ++s) {
+                ENSURE_EQ_INT(step(MOTUS_R(1.0) / 60), MOTUS_OK);
+                if (!far) alone[s] = W.x[1][1];
+                else ENSURE(W.x[1][1] == alone[s]);
+            }
+            ENSURE(W.x[1][1] == 2 && W.v[1][1] == 0);
+        }
+        /* a pile of 400 in a box 20 balls wide, listed from the top row down, the immovable one 10^6 radii
+           above it */
+        {
+            const int n = 400;
+            world_init(dims, n + 1, MOTUS_R(0.5));
+            W.state.inverse_mass = W.inverse_mass;
+            W.scene.gravity = motus_v3(0, -10, 0);
+            W.scene.bounds_min = motus_v3(0, 0, 0);
+            W.scene.bounds_max = motus_v3(dims == 2 ? 20 : 5, (motus_real)HUGE_VAL, 4);
+            W.scene.contacts.friction = MOTUS_R(0.3);
+            W.scene.substeps = 4;
+            for (i = 0; i < n; ++i) {
+                const int per_row = dims == 2 ? 18 : 16, column = i % per_row, row = i / per_row;
+                W.inverse_mass[i] = 1;
+                W.x[0][i] = MOTUS_R(0.55) + (motus_real)(dims == 2 ? column : column % 4) * MOTUS_R(1.1);
+                W.x[1][i] = MOTUS_R(0.55) + (motus_real)(n / per_row - row) * MOTUS_R(1.1); /* top row first */
+                if (dims == 3) W.x[2][i] = MOTUS_R(0.55) + (motus_real)(column / 4) * MOTUS_R(0.9);
+            }
+            W.inverse_mass[n] = 0, W.x[0][n] = 2, W.x[1][n] = MOTUS_R(5e5), W.x[2][n] = 2;
+            for (s = 0; s < 300; ++s) ENSURE_EQ_INT(step(MOTUS_R(1.0) / 60), MOTUS_OK);
+            W.state.count = n; /* the pile's own kinetic energy (the immovable one has no mass to count) */
+            printf("  %dD: a pile of %d with a particle 10^6 r above: largest overlap %.3g r, kinetic energy %.3g\n",
+                   dims, n, largest_overlap(n) / 0.5, kinetic_energy());
+            ENSURE(largest_overlap(n) < 0.01 * 0.5);
+            ENSURE(kinetic_energy() < 1e-3);
+        }
+    }
+}
+
+/* Friction at any scale: a ball lands on the floor at (3s, -s) with friction 0.5 and leaves at 2.5s along
+   the floor, s = 1 or 1e19 (float; 1e150 in double): at 1e19 the square of the sliding speed overflowed and
+   friction was dropped. */
+TEST(friction_at_any_scale) {
+    int dims, big;
+    for (dims = 2; dims <= 3; ++dims)
+        for (big = 0; big <= 1; ++big) {
+            const double scale = !big ? 1 : sizeof(motus_real) == sizeof(float) ? 1e19 : 1e150;
+            world_init(dims, 1, 1);
+            W.x[1][0] = 1;
+            W.v[0][0] = (motus_real)(3 * scale), W.v[1][0] = (motus_real)-scale;
+            W.scene.contacts.friction = MOTUS_R(0.5);
+            W.scene.contacts.restitution_threshold = (motus_real)(10 * scale); /* no bounce */
+            W.scene.bounds_min = motus_v3(-(motus_real)HUGE_VAL, 0, -(motus_real)HUGE_VAL);
+            W.scene.bounds_max = motus_v3((motus_real)HUGE_VAL, (motus_real)HUGE_VAL, (motus_real)HUGE_VAL);
+            ENSURE_EQ_INT(step((motus_real)(0.01 / scale)), MOTUS_OK);
+            ENSURE_NEAR((double)W.v[0][0] / scale, 2.5, 1e-5);
+            ENSURE(W.v[1][0] == 0);
+        }
+}
+
+/* A count of 0 with contacts on needs no scratch and steps nothing; an axis of the bounds whose min and
+   max are both 0 has no walls (the 2D bounds in a 3D scene leave z free). */
+TEST(zero_means_nothing) {
+    int dims, contacts;
+    motus_contact_pair pair;
+    int found = -1;
+    world_init(2, 0, 1);
+    ENSURE(motus_scratch_size(&W.scene, &W.state) == 0);
+    ENSURE_EQ_INT(motus_step(&W.scene, &W.state, MOTUS_R(0.1), NULL, 0), MOTUS_OK);
+    ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, NULL, 0, &pair, 1, &found), MOTUS_OK);
+    ENSURE(found == 0);
+    for (dims = 2; dims <= 3; ++dims)
+        for (contacts = 0; contacts <= 1; ++contacts) {
+            world_init(dims, 1, 1);
+            W.scene.contacts.enabled = contacts;
+            W.scene.bounds_max = motus_v3(10, 10, 0);
+            W.x[0][0] = W.x[1][0] = 5;
+            W.v[2][0] = 1;
+            ENSURE_EQ_INT(step(1), MOTUS_OK);
+            ENSURE(W.x[0][0] == 5 && W.x[1][0] == 5);
+            if (dims == 3) ENSURE(W.x[2][0] == 1 && W.v[2][0] == 1);
+        }
+}
+
 static const motus_test_case TESTS[] = {
     TEST_CASE(head_on_matches_the_closed_form),
     TEST_CASE(glancing_hit_matches_the_closed_form),
@@ -562,6 +749,11 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(pile_of_2000_settles),
     TEST_CASE(bad_input_is_refused),
     TEST_CASE(immovable_particles_are_obstacles),
+    TEST_CASE(radii_have_their_own_stride),
+    TEST_CASE(overfull_row_rises),
+    TEST_CASE(far_particle_changes_nothing_nearby),
+    TEST_CASE(friction_at_any_scale),
+    TEST_CASE(zero_means_nothing),
 };
 
 int main(int argc, char **argv) { return motus_test_main(argc, argv, TESTS, TEST_COUNT(TESTS)); }

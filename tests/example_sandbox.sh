@@ -18,8 +18,8 @@
 #             (OUTPUT_DIR/sandbox_collisions.png): the balls have piled up on the floor and rest there: scene=
 #             names contacts, every ball is drawn whole inside the window, the largest overlap between two
 #             balls (motus_find_contacts, printed as overlap_ratio, a share of the smaller radius) is below 20%
-#             (measured 6.2% at the sandbox's 2 substeps, 5,000 balls 40 deep; tests/contacts.c holds a 2,000-ball
-#             pile at 4 substeps under 1%), the pile's rms speed is below 10 px/s (measured 3.6; a ball's fall
+#             (measured 5.1% at the sandbox's 2 substeps, 5,000 balls 40 deep; tests/contacts.c holds a 2,000-ball
+#             pile at 4 substeps under 1%), the pile's rms speed is below 10 px/s (measured 3.7; a ball's fall
 #             through one radius under gravity is 40 px/s)
 #             and its mean height is that of a pile on the floor (mean_y > 400 px: the balls' area fills the
 #             lower 300 px of the window); the same run with collisions off, as a control, has the balls

@@ -242,7 +242,7 @@ typedef struct world {
     motus_particle3 *particles3; /* LAYOUT_PARTICLES, 3D */
     motus_particle *loose;       /* two particles for the particle functions when the layout has none */
     motus_particle3 *loose3;
-    motus_real *radius;          /* per-particle radii at the state's stride, when the state has them */
+    motus_real *radius;          /* per-particle radii at their own stride or the state's, when the state has them */
 } world;
 
 /* scene.parallel_for on the calling thread: the tasks from the last to the first, or in ranges of 1-3
@@ -425,11 +425,11 @@ static void build_state(world *w, reader *r) {
         if (w->dims == 2) {
             w->particles = (motus_particle *)(void *)buffer_add(&w->memory, (size_t)w->n * sizeof(motus_particle), guard, 1);
             w->state = motus_state_of_particles(w->particles, w->n);
-            REQUIRE(w->state.dimensions == 2 && w->state.count == w->n);
+            REQUIRE(w->state.dimensions == 2 && w->state.count == w->n && w->state.radius_stride == 1);
         } else {
             w->particles3 = (motus_particle3 *)(void *)buffer_add(&w->memory, (size_t)w->n * sizeof(motus_particle3), guard, 1);
             w->state = motus_state_of_particles3(w->particles3, w->n);
-            REQUIRE(w->state.dimensions == 3 && w->state.count == w->n);
+            REQUIRE(w->state.dimensions == 3 && w->state.count == w->n && w->state.radius_stride == 1);
         }
         stride = w->state.stride;
         at[F_PX] = w->state.position[0], at[F_PY] = w->state.position[1], at[F_PZ] = w->state.position[2];
@@ -476,14 +476,27 @@ static void build_state(world *w, reader *r) {
         break;
     default: break;
     }
-    /* radii, at the state's stride: mostly ordinary, sometimes anything */
-    w->radius = (motus_real *)(void *)buffer_add(&w->memory, ((size_t)(w->n - 1) * (size_t)stride + 1) * sizeof(motus_real),
-                                                 guard, 10);
-    for (i = 0; i < w->n; ++i) {
-        const unsigned k = byte(r);
-        w->radius[(ptrdiff_t)i * stride] = k >= 240 ? real(r) : (motus_real)(k % 64) / 32;
+    /* radii, mostly ordinary, sometimes anything; at the state's stride (radius_stride 0) or their own (1-3,
+       as motus_state_of_particles's 1), picked from the byte that says whether there are radii (the bytes
+       read are those of before radius_stride, so the corpus inputs keep their radii) */
+    {
+        motus_real values[MAX_PARTICLES];
+        unsigned k;
+        int pick;
+        ptrdiff_t radius_stride;
+        for (i = 0; i < w->n; ++i) {
+            k = byte(r);
+            values[i] = k >= 240 ? real(r) : (motus_real)(k % 64) / 32;
+        }
+        k = byte(r);
+        pick = (int)(k / 3 % 4);
+        radius_stride = pick == 0 ? stride : pick;
+        w->radius = (motus_real *)(void *)buffer_add(
+            &w->memory, ((size_t)(w->n - 1) * (size_t)radius_stride + 1) * sizeof(motus_real), guard, 10);
+        for (i = 0; i < w->n; ++i) w->radius[(ptrdiff_t)i * radius_stride] = values[i];
+        w->state.radius = k % 3 ? w->radius : NULL;
+        w->state.radius_stride = pick;
     }
-    w->state.radius = byte(r) % 3 ? w->radius : NULL;
     /* two loose particles for the particle functions */
     if (!w->particles) w->loose = (motus_particle *)(void *)buffer_add(&w->memory, 2 * sizeof(motus_particle), guard, 7);
     if (!w->particles3)
@@ -514,6 +527,7 @@ static motus_state variant(world *w, reader *r) {
     case 0: s.dimensions = small(r, -1, 4); break; /* 1, 4, -1: invalid; 0 means 2 */
     case 1: s.count = -1 - small(r, 0, 1) * (INT_MAX - 1); break;
     case 2: s.stride = -small(r, 1, 2); break;
+    case 9: s.radius_stride = -small(r, 1, 2); break;
     case 3: s.position[small(r, 0, s.dimensions == 3 ? 2 : 1)] = NULL; break;
     case 4: s.velocity[small(r, 0, s.dimensions == 3 ? 2 : 1)] = NULL; break;
     case 5: /* a position and a velocity array at one address: written twice */
@@ -592,7 +606,7 @@ static void step_operation(world *w, reader *r, int ranged) {
     buffers *m = &w->memory;
     const int before_count = m->count;
 
-    shape_ok = (dims == 2 || dims == 3) && s.count >= 0 && s.count <= w->n && s.stride >= 0 &&
+    shape_ok = (dims == 2 || dims == 3) && s.count >= 0 && s.count <= w->n && s.stride >= 0 && s.radius_stride >= 0 &&
                motus_state_check(NULL, &s, 0, 0, NULL) == MOTUS_OK;
     if (ranged) {
         const unsigned k = byte(r);
