@@ -2680,10 +2680,18 @@ typedef struct motus__contact_job {
     int slab_first[MOTUS__SLABS + 1], wall_start[MOTUS__SLABS + 1]; /* near_wall by slab task */
     unsigned char failed[MOTUS__TASKS];
     /* the grid's scans in tasks: the largest radius; the lowest and highest cell across slab_axis; the
-       particles near a wall */
-    motus_real task_scan[MOTUS__TASKS][1];
+       particles near a wall; the largest coordinate of a particle in a listed pair */
+    motus_real task_largest_radius[MOTUS__TASKS], task_largest_coordinate[MOTUS__TASKS];
     int task_cells[MOTUS__TASKS][2], task_near[MOTUS__TASKS];
     motus_real largest_radius;
+    /* m: in the support sweep a gap this small is a contact: 4 ulps of the largest coordinate of a particle
+       in a listed pair (6.7e-4 m at 1,414 m in float, 2.4e-5 m at 50 m). Over the pairs, not the scene:
+       one particle flung far away (no pairs) made every gap below 4 ulps of its coordinate a contact (a
+       ball 0.06 m above another took 84 frames to land, not 6, beside an immovable particle at x = 1e6 m
+       in float). Over all the pairs, not each pair's own: a pile's rows pass the rounding of their lifts
+       up a column, so the rounding that counts is the pile's; each pair's own, tiny near the origin,
+       left the bottom corner of a 2D pile of 10^5 churning (largest overlap 1.1e-3 r, not 2e-4) */
+    motus_real rounding;
     uint32_t *height_key; /* per particle, its height as a key (motus__height_key), in the sort bins */
     double height_scale;  /* keys per metre of height: 64 / the largest radius */
 } motus__contact_job;
@@ -2748,7 +2756,7 @@ static void motus__scan_task(void *context, int first, int count) {
             const motus_real r = motus__contact_r(j, i);
             if (r > largest_radius) largest_radius = r;
         }
-        j->task_scan[t][0] = largest_radius;
+        j->task_largest_radius[t] = largest_radius;
     }
 }
 /* A height as an unsigned key in the same order: in steps of 1/64 of the largest radius (heights closer
@@ -2808,17 +2816,29 @@ static void motus__slabs_task(void *context, int first, int count) {
    support sweep no longer went from the bottom up (a settled pile of 2,000 with an immovable particle
    10^6 px above it blew up: overlaps of 1.96 r). */
 static void motus__height_order(motus__contact_job *j, int *spare) {
-    int *from = j->order, *to = spare, *swap, i, pass, byte;
-    for (i = 0; i < j->count; ++i) from[i] = i;
+    /* the keys move with their particles (the scatter then reads both in order); their spare: after the
+       particles' spare. The four bytes' counts in one pass over the keys, in index order. */
+    uint32_t *keys = j->height_key, *keys_to = (uint32_t *)(void *)(spare + j->count), *swap_keys;
+    int *from = j->order, *to = spare, *swap, i, pass, byte, start[4][257];
+    for (pass = 0; pass < 4; ++pass)
+        for (byte = 0; byte <= 256; ++byte) start[pass][byte] = 0;
+    for (i = 0; i < j->count; ++i) {
+        const uint32_t key = keys[i];
+        from[i] = i;
+        ++start[0][(key & 255u) + 1], ++start[1][((key >> 8) & 255u) + 1];
+        ++start[2][((key >> 16) & 255u) + 1], ++start[3][(key >> 24) + 1];
+    }
     for (pass = 0; pass < 4; ++pass) {
-        int start[257];
+        int *next = start[pass];
         const int shift = 8 * pass;
-        for (byte = 0; byte <= 256; ++byte) start[byte] = 0;
-        for (i = 0; i < j->count; ++i) ++start[((j->height_key[from[i]] >> shift) & 255u) + 1];
-        if (start[((j->height_key[from[0]] >> shift) & 255u) + 1] == j->count) continue; /* one byte for all */
-        for (byte = 0; byte < 256; ++byte) start[byte + 1] += start[byte];
-        for (i = 0; i < j->count; ++i) to[start[(j->height_key[from[i]] >> shift) & 255u]++] = from[i];
+        if (next[((keys[0] >> shift) & 255u) + 1] == j->count) continue; /* one byte for all */
+        for (byte = 0; byte < 256; ++byte) next[byte + 1] += next[byte];
+        for (i = 0; i < j->count; ++i) {
+            const int k = next[(keys[i] >> shift) & 255u]++;
+            to[k] = from[i], keys_to[k] = keys[i];
+        }
         swap = from, from = to, to = swap;
+        swap_keys = keys, keys = keys_to, keys_to = swap_keys;
     }
     if (from != j->order) memcpy(j->order, from, sizeof(int) * (size_t)j->count);
 }
@@ -2892,7 +2912,7 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     j->slab_rank = ints, ints += count;
     j->task_of = ints, ints += count;
     j->sort_bins = ints, ints += 3 * count + MOTUS__SLABS + 1;
-    j->height_key = (uint32_t *)(void *)j->sort_bins; /* free until the pairs are sorted; the next count: spare */
+    j->height_key = (uint32_t *)(void *)j->sort_bins; /* free until the pairs are sorted; then 2 counts of spare */
     j->pairs = (motus_contact_pair *)(void *)ints;
     j->pairs_sorted = j->pairs + l->pair_capacity;
     j->geometry = reals;
@@ -2906,7 +2926,7 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     /* the largest radius (per task, then the largest of those) */
     motus__for(scene, motus__scan_task, j, j->tasks);
     for (t = 0; t < j->tasks; ++t)
-        if (j->task_scan[t][0] > largest_radius) largest_radius = j->task_scan[t][0];
+        if (j->task_largest_radius[t] > largest_radius) largest_radius = j->task_largest_radius[t];
     j->largest_radius = largest_radius;
     j->grid = largest_radius > 0 && count > 1;
     if (j->grid) {
@@ -3053,18 +3073,16 @@ static motus_real motus__length_scaled(const motus_real *t, motus_real t2, int d
     for (d = 0; d < dims; ++d) sum += (t[d] / largest) * (t[d] / largest);
     return largest * MOTUS_SQRT(sum);
 }
-/* The rounding of the coordinates at particle p (an offset: p = i * stride): 4 ulps of its largest
-   coordinate (6.7e-4 m at 1,414 m in float, 2.4e-5 m at 50 m). The particle's own, not the largest in the
-   scene: one particle far away made every gap below 4 ulps of its coordinate a contact (a ball 0.06 m above
-   another took 84 frames to land, not 6, with an immovable particle at x = 1e6 m in float). */
-static motus_real motus__rounding_at(const motus__contact_job *j, ptrdiff_t p) {
+/* The largest |coordinate| of particle i (the support sweep's rounding is 4 ulps of the largest over the
+   particles in a listed pair: see `rounding` in motus__contact_job). */
+static motus_real motus__largest_coordinate(const motus__contact_job *j, int i) {
     motus_real largest = 0;
     int d;
     for (d = 0; d < j->dims; ++d) {
-        const motus_real x = j->x[d][p], m = x < 0 ? -x : x;
+        const motus_real x = j->x[d][(ptrdiff_t)i * j->stride], m = x < 0 ? -x : x;
         if (m > largest) largest = m;
     }
-    return largest * (4 * MOTUS_REAL_EPSILON);
+    return largest;
 }
 /* In the support sweep, is a (below b, in the next slab) solved after b? Its support is not known yet when
    b is solved: it is taken as supported (a pile rests on its neighbours; taken as unsupported, a ball on a
@@ -3102,7 +3120,7 @@ MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int 
        letting a particle fall into such a gap against a support taken as still fed the rounding of each
        row's lift back into the next substep's gaps, and a float pile 700 rows deep at x = 1,400 m (ulp
        1.2e-4 m) blew up within three substeps. Larger gaps close as in the other sweeps (nothing hovers). */
-    allowed = gap > 0 && (!j->shock || gap > motus__rounding_at(j, pb)) ? -gap / j->h : 0;
+    allowed = gap > 0 && (!j->shock || gap > j->rounding) ? -gap / j->h : 0;
     if (j->shock) {
         /* the last sweep: a particle resting on a support (a wall, an immovable particle, or a particle that
            rests on one) within 60 degrees of up is a support for the one above it (a neighbour in the same
@@ -3472,6 +3490,18 @@ static void motus__particles_task(void *context, int first, int count) {
         j->failed[t] = (unsigned char)bad;
     }
 }
+/* The largest |coordinate| of the particles in `count` pairs. */
+static motus_real motus__pairs_largest_coordinate(const motus__contact_job *j, const motus_contact_pair *pairs,
+                                                  size_t count) {
+    motus_real largest = 0;
+    size_t k;
+    for (k = 0; k < count; ++k) {
+        const motus_real xa = motus__largest_coordinate(j, pairs[k].a), xb = motus__largest_coordinate(j, pairs[k].b);
+        if (xa > largest) largest = xa;
+        if (xb > largest) largest = xb;
+    }
+    return largest;
+}
 /* The listing of task t's particles into its part of the list; task_found[t] past its room: it ran out. */
 static void motus__record_task(void *context, int first, int count) {
     motus__contact_job *j = (motus__contact_job *)context;
@@ -3485,6 +3515,7 @@ static void motus__record_task(void *context, int first, int count) {
                                      j->geometry + 4 * (base + found), room - found);
         j->task_found[t] = found;
         for (k = 0; k < j->slabs; ++k) j->task_pairs[t][k] = 0;
+        j->task_largest_coordinate[t] = motus__pairs_largest_coordinate(j, j->pairs + base, found <= room ? found : 0);
         for (k = 0; found <= room && k < (int)found; ++k)
             ++j->task_pairs[t][motus__pair_task(j, j->pairs[base + (size_t)k].b)];
     }
@@ -3509,6 +3540,8 @@ static motus_result motus__contacts_pass(const motus_scene *scene, const motus_s
                                                (size_t)j->pairs_per_particle;
         if (!overflow) {
             j->listed = j->count;
+            for (t = 0; t < j->tasks; ++t)
+                if (j->task_largest_coordinate[t] > j->rounding) j->rounding = j->task_largest_coordinate[t];
         } else {
             /* a crowded part ran out of room: list into the whole list, one particle after another, and
                leave the rest to be searched at every sweep; no slabs */
@@ -3525,7 +3558,14 @@ static motus_result motus__contacts_pass(const motus_scene *scene, const motus_s
             j->slabs = j->even_slabs = 1;
             j->slab_rank = j->rank, j->slab_first[1] = j->count;
             j->wall_start[0] = 0, j->wall_start[1] = j->near_walls;
+            /* the listed pairs' particles, and those left to be searched (whose pairs are not known yet) */
+            j->rounding = motus__pairs_largest_coordinate(j, j->pairs, j->pair_count);
+            for (i = j->listed; i < j->count; ++i) {
+                const motus_real x = motus__largest_coordinate(j, j->order[i]);
+                if (x > j->rounding) j->rounding = x;
+            }
         }
+        j->rounding *= 4 * MOTUS_REAL_EPSILON;
         if (j->listed == j->count) motus__sort_pairs(scene, j);
     }
     /* the impulses of the listed pairs, kept over the velocity sweeps (see motus__pair_velocity), in the
