@@ -2682,6 +2682,11 @@ typedef struct motus__contact_job {
     /* the grid's scans in tasks: the largest radius; the lowest and highest cell across slab_axis; the
        particles near a wall; the largest coordinate of a particle in a listed pair */
     motus_real task_largest_radius[MOTUS__TASKS], task_largest_coordinate[MOTUS__TASKS];
+    motus_real task_largest_velocity[MOTUS__TASKS];
+    /* the velocity sweeps run on velocities times this power of two (1 but where a velocity component is
+       above the largest real / 64: there an approach speed, or an impulse of (1 + e) times it, would
+       overflow where the velocities after it do not); h and the threshold are scaled to match */
+    motus_real velocity_scale;
     int task_cells[MOTUS__TASKS][2], task_near[MOTUS__TASKS];
     motus_real largest_radius;
     /* m: in the support sweep a gap this small is a contact: 4 ulps of the largest coordinate of a particle
@@ -2750,13 +2755,20 @@ static void motus__scan_task(void *context, int first, int count) {
     motus__contact_job *j = (motus__contact_job *)context;
     int t, i, from, to;
     for (t = first; t < first + count; ++t) {
-        motus_real largest_radius = 0;
+        motus_real largest_radius = 0, largest_velocity = 0;
+        int d;
         motus__task_range(j, t, &from, &to);
         for (i = from; i < to; ++i) {
             const motus_real r = motus__contact_r(j, i);
             if (r > largest_radius) largest_radius = r;
         }
+        for (d = 0; d < j->dims; ++d)
+            for (i = from; i < to; ++i) {
+                const motus_real v = j->v[d][(ptrdiff_t)i * j->stride], m = v < 0 ? -v : v;
+                if (m > largest_velocity) largest_velocity = m;
+            }
         j->task_largest_radius[t] = largest_radius;
+        j->task_largest_velocity[t] = largest_velocity;
     }
 }
 /* A height as an unsigned key in the same order: in steps of 1/64 of the largest radius (heights closer
@@ -2925,8 +2937,13 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     j->mask = (unsigned)(l->table_size - 1);
     /* the largest radius (per task, then the largest of those) */
     motus__for(scene, motus__scan_task, j, j->tasks);
-    for (t = 0; t < j->tasks; ++t)
+    j->velocity_scale = 1;
+    for (t = 0; t < j->tasks; ++t) {
         if (j->task_largest_radius[t] > largest_radius) largest_radius = j->task_largest_radius[t];
+        while (j->task_largest_velocity[t] * j->velocity_scale > (motus_real)MOTUS__REAL_MAX / 64 &&
+               j->task_largest_velocity[t] <= (motus_real)MOTUS__REAL_MAX)
+            j->velocity_scale *= MOTUS_R(0.5);
+    }
     j->largest_radius = largest_radius;
     j->grid = largest_radius > 0 && count > 1;
     if (j->grid) {
@@ -3521,6 +3538,15 @@ static void motus__record_task(void *context, int first, int count) {
     }
 }
 
+/* Velocities, h and the threshold for the velocity sweeps at a scale (see velocity_scale): powers of two,
+   exact but where a component goes subnormal. `by` multiplies the velocities and the threshold and divides h. */
+static void motus__scale_velocities(motus__contact_job *j, motus_real by) {
+    int i, d;
+    for (d = 0; d < j->dims; ++d)
+        for (i = 0; i < j->count; ++i) j->v[d][(ptrdiff_t)i * j->stride] *= by;
+    j->threshold *= by;
+    j->h /= by;
+}
 /* One contact pass after a substep of h: the pairs recorded (as many particles' worth as the list holds;
    the rest are searched again at each sweep, in the same order), then `iterations` sweeps of velocity
    impulses over the pairs and walls, then as many of position projection. */
@@ -3578,9 +3604,12 @@ static motus_result motus__contacts_pass(const motus_scene *scene, const motus_s
        from the bottom up with its lower particle counted immovable, so the rows above do not push the rows
        below back into the floor. For velocities only where the lower one is supported (a wall, an
        immovable particle, or one resting on them): in free space every impulse stays equal and opposite. */
+    if (j->velocity_scale != 1) motus__scale_velocities(j, j->velocity_scale);
     for (phase = MOTUS__PAIRS_VELOCITY; phase <= MOTUS__PAIRS_POSITION; ++phase)
         for (sweep = 0; sweep < j->iterations + (MOTUS_CONTACT_SUPPORT_SWEEPS != 0); ++sweep) {
             j->shock = sweep == j->iterations;
+            if (phase == MOTUS__PAIRS_POSITION && sweep == 0 && j->velocity_scale != 1)
+                motus__scale_velocities(j, 1 / j->velocity_scale); /* back (Inf: reported) */
             if (j->shock && phase == MOTUS__PAIRS_VELOCITY) {
                 motus__particles_context context;
                 context.job = j, context.finish = 0;

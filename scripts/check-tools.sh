@@ -56,9 +56,13 @@ asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|cla
 #   in the other contacts.* tests and the pile itself under ASan. threads.*: thousands of balls per step on 2
 #   and 3 threads (valgrind runs one thread at a time: about an hour); they run under ASan, and under
 #   ThreadSanitizer in the normal tree (threads.tsan).
+# - render.double.*, render.canvas_centroid_accuracy: OSMesa's llvmpipe under valgrind takes 50-250 s a test
+#   (1,500 s of the 2,100 s of CPU the valgrind pass took at d430b01), and what it checks there is Mesa's
+#   rasteriser; the float render.* tests run the same harness and motus calls under valgrind, the double
+#   ones run natively and under ASan.
 # Script-driven tests (compile.gcc.* ...) run with --trace-children: valgrind follows the programs the script
 # starts from the build tree and skips system programs (compilers, shells' tools) by the skip patterns.
-valgrind_exclude='^(compile\.engine\.|determinism\.|consumer\.|example\.|bench\.|engine(_checked)?\.(float|double)\.paths_agree_|stability\.(float|double)\.ten_million_steps$|contacts\.[a-z_]+\.pile_of_2000_settles$|threads\.)'
+valgrind_exclude='^(compile\.engine\.|determinism\.|consumer\.|example\.|bench\.|engine(_checked)?\.(float|double)\.paths_agree_|stability\.(float|double)\.ten_million_steps$|contacts\.[a-z_]+\.pile_of_2000_settles$|threads\.|render\.(double\.|canvas_centroid_accuracy$))'
 valgrind_options="--error-exitcode=1 --trace-children=yes --trace-children-skip=/usr/*,/bin/*,/sbin/* --leak-check=full --show-leak-kinds=definite --errors-for-leak-kinds=definite \
 --track-origins=yes --num-callers=30 --suppressions=$root/tests/support/valgrind.supp"
 

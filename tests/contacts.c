@@ -711,6 +711,27 @@ TEST(friction_at_any_scale) {
         }
 }
 
+/* A head-on hit at speeds whose difference overflows (2e38 m/s each way in float, 1e308 in double: the
+   approach speed is past the largest real, the velocities after it are not) bounces as at any speed: equal
+   masses with restitution 1 exchange their velocities, with 1/2 they leave at half the approach speed. */
+TEST(head_on_at_any_speed) {
+    int dims, half;
+    for (dims = 2; dims <= 3; ++dims)
+        for (half = 0; half <= 1; ++half) {
+            /* balls of radius 1e30 (1e300): a step of 1e-3 radius is a dt of a normal real */
+            const int is_float = sizeof(motus_real) == sizeof(float);
+            const double speed = is_float ? 2e38 : 1e308, e = half ? 0.5 : 1, radius = is_float ? 1e30 : 1e300;
+            world_init(dims, 2, (motus_real)radius);
+            W.x[0][1] = (motus_real)(1.999 * radius);
+            W.v[0][0] = (motus_real)speed, W.v[0][1] = (motus_real)-speed;
+            W.scene.contacts.restitution = (motus_real)e;
+            ENSURE_EQ_INT(step((motus_real)(1e-4 * radius / speed)), MOTUS_OK);
+            ENSURE_NEAR((double)W.v[0][0] / speed, -e, 1e-5);
+            ENSURE_NEAR((double)W.v[0][1] / speed, e, 1e-5);
+            ENSURE(W.v[1][0] == 0 && W.v[1][1] == 0);
+        }
+}
+
 /* A count of 0 with contacts on needs no scratch and steps nothing; an axis of the bounds whose min and
    max are both 0 has no walls (the 2D bounds in a 3D scene leave z free). */
 TEST(zero_means_nothing) {
@@ -753,6 +774,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(overfull_row_rises),
     TEST_CASE(far_particle_changes_nothing_nearby),
     TEST_CASE(friction_at_any_scale),
+    TEST_CASE(head_on_at_any_speed),
     TEST_CASE(zero_means_nothing),
 };
 
