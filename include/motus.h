@@ -2693,9 +2693,9 @@ typedef struct motus__contact_job {
        in a listed pair (6.7e-4 m at 1,414 m in float, 2.4e-5 m at 50 m). Over the pairs, not the scene:
        one particle flung far away (no pairs) made every gap below 4 ulps of its coordinate a contact (a
        ball 0.06 m above another took 84 frames to land, not 6, beside an immovable particle at x = 1e6 m
-       in float). Over all the pairs, not each pair's own: a pile's rows pass the rounding of their lifts
-       up a column, so the rounding that counts is the pile's; each pair's own, tiny near the origin,
-       left the bottom corner of a 2D pile of 10^5 churning (largest overlap 1.1e-3 r, not 2e-4) */
+       in float). Over all the pairs, not each particle's own: a pile's rows pass the rounding of their
+       lifts up a column, so the rounding that counts is the pile's; each particle's own, tiny near the
+       origin, left the bottom corner of a 2D pile of 10^5 churning (in slabs: 1.1e-3 r, now 4e-4 r) */
     motus_real rounding;
     uint32_t *height_key; /* per particle, its height as a key (motus__height_key), in the sort bins */
     double height_scale;  /* keys per metre of height: 64 / the largest radius */
