@@ -612,7 +612,9 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
    - Deterministic: the order depends on the data only (heights, indices, cells), never on threads.
    - Radii may differ by up to about 1e20 in float (1e150 in double): distances are formed in units of the
      largest radius, and beyond that the squared distances of the smallest pairs underflow (they are then
-     missed, or pushed apart along x).
+     missed, or pushed apart along x). Velocities may be anything finite: where a component passes the
+     largest real / 64, the velocity sweeps run on velocities scaled down by a power of two, so that an
+     approach speed that overflows (2e38 m/s head-on in float) bounces as at any speed.
    - Cost per substep: O(N + pairs * iterations); motus_find_contacts gives the overlapping pairs for game
      logic. Memory: the scratch (motus_scratch_size), and about 19 KB of stack for the pass's job (the
      tasks' tables; mind it on a fiber's small stack).
@@ -633,10 +635,11 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      What the slabs cost: the order is no longer bottom-up across a slab border (a support in the odd slab
      beside an even one is solved after it; the support sweep takes it as resting, else a ball on the
      border was pushed off its V), so a step with parallel_for gives other bits than one without, and deep
-     2D piles rest less tightly: largest overlap 2.0e-4 r against 6.1e-5 r in a 2D pile of 10^5 balls
-     (224 rows), 1.3e-3 r against 9.9e-4 r in 3D; a 6,000-ball pile settles alike (with 4-cell slabs in
+     2D piles rest less tightly: largest overlap 4e-4 r against 6.1e-5 r in a 2D pile of 10^5 balls
+     (224 rows; 1.1e-3 r against 1.4e-3 r in 3D); a 6,000-ball pile settles alike (with 4-cell slabs in
      2D: 5.5e-4 r there, hence 16). Below 4,096 particles there are no slabs and the bits are the same with
-     or without parallel_for. The hash table's and the heights' counting sorts stay on the calling thread.
+     or without parallel_for. The hash table's counting sort and the heights' radix sort stay on the
+     calling thread.
      motus_step_range refuses a scene with contacts: a contact pass needs all the particles.
 
    >>determinism
