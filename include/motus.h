@@ -614,7 +614,9 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      largest radius, and beyond that the squared distances of the smallest pairs underflow (they are then
      missed, or pushed apart along x). Velocities may be anything finite: where a component passes the
      largest real / 64, the velocity sweeps run on velocities scaled down by a power of two, so that an
-     approach speed that overflows (2e38 m/s head-on in float) bounces as at any speed.
+     approach speed that overflows (2e38 m/s head-on in float) bounces as at any speed. An impulse (a
+     momentum) past the largest real is not scaled: it is reported (MOTUS_ERROR_NOT_FINITE, or
+     MOTUS_ERROR_OVERFLOW with MOTUS_CHECKED), e.g. 1e36 m/s head-on between 1,000 kg balls in float.
    - Cost per substep: O(N + pairs * iterations); motus_find_contacts gives the overlapping pairs for game
      logic. Memory: the scratch (motus_scratch_size), and about 19 KB of stack for the pass's job (the
      tasks' tables; mind it on a fiber's small stack).
@@ -2683,23 +2685,14 @@ typedef struct motus__contact_job {
     int slab_first[MOTUS__SLABS + 1], wall_start[MOTUS__SLABS + 1]; /* near_wall by slab task */
     unsigned char failed[MOTUS__TASKS];
     /* the grid's scans in tasks: the largest radius; the lowest and highest cell across slab_axis; the
-       particles near a wall; the largest coordinate of a particle in a listed pair */
-    motus_real task_largest_radius[MOTUS__TASKS], task_largest_coordinate[MOTUS__TASKS];
-    motus_real task_largest_velocity[MOTUS__TASKS];
+       particles near a wall; the largest velocity component */
+    motus_real task_largest_radius[MOTUS__TASKS], task_largest_velocity[MOTUS__TASKS];
     /* the velocity sweeps run on velocities times this power of two (1 but where a velocity component is
        above the largest real / 64: there an approach speed, or an impulse of (1 + e) times it, would
        overflow where the velocities after it do not); h and the threshold are scaled to match */
     motus_real velocity_scale;
     int task_cells[MOTUS__TASKS][2], task_near[MOTUS__TASKS];
     motus_real largest_radius;
-    /* m: in the support sweep a gap this small is a contact: 4 ulps of the largest coordinate of a particle
-       in a listed pair (6.7e-4 m at 1,414 m in float, 2.4e-5 m at 50 m). Over the pairs, not the scene:
-       one particle flung far away (no pairs) made every gap below 4 ulps of its coordinate a contact (a
-       ball 0.06 m above another took 84 frames to land, not 6, beside an immovable particle at x = 1e6 m
-       in float). Over all the pairs, not each particle's own: a pile's rows pass the rounding of their
-       lifts up a column, so the rounding that counts is the pile's; each particle's own, tiny near the
-       origin, left the bottom corner of a 2D pile of 10^5 churning (in slabs: 1.1e-3 r, now 4e-4 r) */
-    motus_real rounding;
     uint32_t *height_key; /* per particle, its height as a key (motus__height_key), in the sort bins */
     double height_scale;  /* keys per metre of height: 64 / the largest radius */
 } motus__contact_job;
@@ -2713,6 +2706,7 @@ enum { MOTUS__PAIRS_RECORD, MOTUS__PAIRS_VELOCITY, MOTUS__PAIRS_POSITION };
 #define MOTUS__DEEP MOTUS_R(0.025) /* of the radii's sum: a deep overlap (see motus__pair_position) */
 #define MOTUS__LEVEL MOTUS_R(0.25) /* the up component below which a deep pair is side by side */
 #define MOTUS__SUPPORT_GROUP 16 /* supports of one particle solved with kept impulses (more: each pass clamped) */
+#define MOTUS__SUPPORT_SLOP (1024 * MOTUS_REAL_EPSILON) /* of the radii's sum: see motus__support_slop */
 #define MOTUS__TOUCH_SUPPORT MOTUS_R(0.05) /* a ball in a random pile touches one support and may miss the next by a few % */
 
 static motus_real motus__contact_w(const motus__contact_job *j, int i) {
@@ -3093,16 +3087,31 @@ static motus_real motus__length_scaled(const motus_real *t, motus_real t2, int d
     for (d = 0; d < dims; ++d) sum += (t[d] / largest) * (t[d] / largest);
     return largest * MOTUS_SQRT(sum);
 }
-/* The largest |coordinate| of particle i (the support sweep's rounding is 4 ulps of the largest over the
-   particles in a listed pair: see `rounding` in motus__contact_job). */
-static motus_real motus__largest_coordinate(const motus__contact_job *j, int i) {
-    motus_real largest = 0;
+/* In the support sweep a gap up to this is a contact (no approach allowed): 4 ulps of the pair's largest
+   coordinate (6.7e-4 m at 1,414 m in float), and at least 4 ulps of 256 radii's sums (MOTUS__SUPPORT_SLOP
+   of the sum: 1.2e-4 in float, 2.3e-13 in double), as if the pair stood a pile's width from the origin.
+   - The rounding: letting a particle fall into a gap of rounding size against a support taken as still
+     fed the rounding of each row's lift back into the next substep's gaps, and a float pile 700 rows deep
+     at x = 1,400 m (ulp 1.2e-4 m) blew up within three substeps.
+   - The slop: with the rounding alone, tiny near the origin, the rows of a float pile there fell into gaps
+     of 1e-6 m and were lifted back at every substep (a 2D pile of 10^5 in slabs: kinetic energy 1.1e-8 of
+     the potential it fell from, its bottom corner's slabs 50% slower a pair; 3e-11 with the slop). What it
+     costs: a ball may rest up to that slop above its support (1e-4 of a diameter in float). A slop of 1e-4
+     of the sum in double let a 400-row pile grow 1 cm in a second, a gap held at every row.
+   - The pair's own coordinates, not the scene's: one particle or pair flung far away made every gap below
+     4 ulps of its coordinate a contact (a ball 0.06 m above another took 84 frames to land, not 6, beside
+     a pair at x = 1e6 m in float). */
+static motus_real motus__support_slop(const motus__contact_job *j, int a, int b, motus_real sum) {
+    motus_real largest = 0, rounding;
     int d;
     for (d = 0; d < j->dims; ++d) {
-        const motus_real x = j->x[d][(ptrdiff_t)i * j->stride], m = x < 0 ? -x : x;
-        if (m > largest) largest = m;
+        const motus_real xa = j->x[d][(ptrdiff_t)a * j->stride], xb = j->x[d][(ptrdiff_t)b * j->stride];
+        const motus_real ma = xa < 0 ? -xa : xa, mb = xb < 0 ? -xb : xb;
+        if (ma > largest) largest = ma;
+        if (mb > largest) largest = mb;
     }
-    return largest;
+    rounding = largest * (4 * MOTUS_REAL_EPSILON);
+    return rounding > MOTUS__SUPPORT_SLOP * sum ? rounding : MOTUS__SUPPORT_SLOP * sum;
 }
 /* In the support sweep, is a (below b, in the next slab) solved after b? Its support is not known yet when
    b is solved: it is taken as supported (a pile rests on its neighbours; taken as unsupported, a ball on a
@@ -3136,11 +3145,9 @@ MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int 
     fast = vn < -j->threshold && !j->shock;
     if (fast ? !(gap <= 0) : (gap > (j->shock ? MOTUS__TOUCH_SUPPORT : MOTUS__TOUCH) * sum && !(gap <= -vn * j->h)))
         return;
-    /* In the support sweep a gap within the rounding of the coordinates is a contact (no approach allowed):
-       letting a particle fall into such a gap against a support taken as still fed the rounding of each
-       row's lift back into the next substep's gaps, and a float pile 700 rows deep at x = 1,400 m (ulp
-       1.2e-4 m) blew up within three substeps. Larger gaps close as in the other sweeps (nothing hovers). */
-    allowed = gap > 0 && (!j->shock || gap > j->rounding) ? -gap / j->h : 0;
+    /* In the support sweep a gap within motus__support_slop is a contact (no approach allowed); larger gaps
+       close as in the other sweeps. */
+    allowed = gap > 0 && (!j->shock || gap > motus__support_slop(j, a, b, sum)) ? -gap / j->h : 0;
     if (j->shock) {
         /* the last sweep: a particle resting on a support (a wall, an immovable particle, or a particle that
            rests on one) within 60 degrees of up is a support for the one above it (a neighbour in the same
@@ -3510,18 +3517,6 @@ static void motus__particles_task(void *context, int first, int count) {
         j->failed[t] = (unsigned char)bad;
     }
 }
-/* The largest |coordinate| of the particles in `count` pairs. */
-static motus_real motus__pairs_largest_coordinate(const motus__contact_job *j, const motus_contact_pair *pairs,
-                                                  size_t count) {
-    motus_real largest = 0;
-    size_t k;
-    for (k = 0; k < count; ++k) {
-        const motus_real xa = motus__largest_coordinate(j, pairs[k].a), xb = motus__largest_coordinate(j, pairs[k].b);
-        if (xa > largest) largest = xa;
-        if (xb > largest) largest = xb;
-    }
-    return largest;
-}
 /* The listing of task t's particles into its part of the list; task_found[t] past its room: it ran out. */
 static void motus__record_task(void *context, int first, int count) {
     motus__contact_job *j = (motus__contact_job *)context;
@@ -3535,7 +3530,6 @@ static void motus__record_task(void *context, int first, int count) {
                                      j->geometry + 4 * (base + found), room - found);
         j->task_found[t] = found;
         for (k = 0; k < j->slabs; ++k) j->task_pairs[t][k] = 0;
-        j->task_largest_coordinate[t] = motus__pairs_largest_coordinate(j, j->pairs + base, found <= room ? found : 0);
         for (k = 0; found <= room && k < (int)found; ++k)
             ++j->task_pairs[t][motus__pair_task(j, j->pairs[base + (size_t)k].b)];
     }
@@ -3569,8 +3563,6 @@ static motus_result motus__contacts_pass(const motus_scene *scene, const motus_s
                                                (size_t)j->pairs_per_particle;
         if (!overflow) {
             j->listed = j->count;
-            for (t = 0; t < j->tasks; ++t)
-                if (j->task_largest_coordinate[t] > j->rounding) j->rounding = j->task_largest_coordinate[t];
         } else {
             /* a crowded part ran out of room: list into the whole list, one particle after another, and
                leave the rest to be searched at every sweep; no slabs */
@@ -3587,14 +3579,7 @@ static motus_result motus__contacts_pass(const motus_scene *scene, const motus_s
             j->slabs = j->even_slabs = 1;
             j->slab_rank = j->rank, j->slab_first[1] = j->count;
             j->wall_start[0] = 0, j->wall_start[1] = j->near_walls;
-            /* the listed pairs' particles, and those left to be searched (whose pairs are not known yet) */
-            j->rounding = motus__pairs_largest_coordinate(j, j->pairs, j->pair_count);
-            for (i = j->listed; i < j->count; ++i) {
-                const motus_real x = motus__largest_coordinate(j, j->order[i]);
-                if (x > j->rounding) j->rounding = x;
-            }
         }
-        j->rounding *= 4 * MOTUS_REAL_EPSILON;
         if (j->listed == j->count) motus__sort_pairs(scene, j);
     }
     /* the impulses of the listed pairs, kept over the velocity sweeps (see motus__pair_velocity), in the

@@ -636,22 +636,29 @@ TEST(overfull_row_rises) {
     }
 }
 
-/* One particle far away changes nothing near the origin: a ball dropped 0.06 m onto an immovable one lands
-   as it does alone, bit for bit (a far particle's coordinate set the rounding of every gap: it took 84
-   frames to land, not 6), and a pile with an immovable particle far above it settles (binned by height
+/* Particles far away change nothing near the origin: a ball dropped 0.06 m onto an immovable one lands as
+   it does alone, bit for bit, beside one far particle, beside a far pair of touching ones, and beside a
+   far one while 30 immovable ones in one spot overflow the pair list (a far coordinate set the rounding of
+   every gap: it took 84 frames to land, not 6), and a pile with an immovable particle far above it settles (binned by height
    over the lowest to the highest, the pile shared a bin or two and lost its bottom-up order: overlaps of
    1.96 r). */
 TEST(far_particle_changes_nothing_nearby) {
     int dims;
     for (dims = 2; dims <= 3; ++dims) {
         motus_real alone[60];
+        const motus_real distance = sizeof(motus_real) == sizeof(float) ? MOTUS_R(1e6) : (motus_real)1e15;
         int far, s, i;
-        for (far = 0; far <= 1; ++far) {
-            world_init(dims, far ? 3 : 2, 1);
+        for (far = 0; far <= 3; ++far) {
+            /* 0: alone; 1: one far particle; 2: a far touching pair; 3: a far one and a crowd */
+            const int count = far == 0 ? 2 : far == 1 ? 3 : far == 2 ? 4 : 33;
+            world_init(dims, count, 1);
             W.state.inverse_mass = W.inverse_mass;
-            W.inverse_mass[0] = 0, W.inverse_mass[1] = 1, W.inverse_mass[2] = 0;
+            for (i = 0; i < count; ++i) W.inverse_mass[i] = 0;
+            W.inverse_mass[1] = 1;
             W.x[1][1] = MOTUS_R(2.06);
-            W.x[0][2] = sizeof(motus_real) == sizeof(float) ? MOTUS_R(1e6) : (motus_real)1e15;
+            W.x[0][2] = distance;
+            if (far == 2) W.x[0][3] = distance + 2; /* touching particle 2 */
+            for (i = 3; far == 3 && i < count; ++i) W.x[0][i] = -50; /* all in one spot */
             W.scene.gravity = motus_v3(0, -10, 0);
             W.scene.substeps = 4;
             for (s = 0; s < 60; ++s) {
