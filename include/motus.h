@@ -637,8 +637,8 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      What the slabs cost: the order is no longer bottom-up across a slab border (a support in the odd slab
      beside an even one is solved after it; the support sweep takes it as resting, else a ball on the
      border was pushed off its V), so a step with parallel_for gives other bits than one without, and deep
-     2D piles rest less tightly: largest overlap 4e-4 r against 6.1e-5 r in a 2D pile of 10^5 balls
-     (224 rows; 1.1e-3 r against 1.4e-3 r in 3D); a 6,000-ball pile settles alike (with 4-cell slabs in
+     2D piles rest less tightly: largest overlap 4.9e-4 r against 6.1e-5 r in a 2D pile of 10^5 balls
+     (224 rows; 1.2e-3 r against 1.3e-3 r in 3D); a 6,000-ball pile settles alike (with 4-cell slabs in
      2D: 5.5e-4 r there, hence 16). Below 4,096 particles there are no slabs and the bits are the same with
      or without parallel_for. The hash table's counting sort and the heights' radix sort stay on the
      calling thread.
@@ -3095,7 +3095,7 @@ static motus_real motus__length_scaled(const motus_real *t, motus_real t2, int d
      at x = 1,400 m (ulp 1.2e-4 m) blew up within three substeps.
    - The slop: with the rounding alone, tiny near the origin, the rows of a float pile there fell into gaps
      of 1e-6 m and were lifted back at every substep (a 2D pile of 10^5 in slabs: kinetic energy 1.1e-8 of
-     the potential it fell from, its bottom corner's slabs 50% slower a pair; 3e-11 with the slop). What it
+     the potential it fell from, its bottom corner's slabs 50% slower a pair; 4e-11 with the slop). What it
      costs: a ball may rest up to that slop above its support (1e-4 of a diameter in float). A slop of 1e-4
      of the sum in double let a 400-row pile grow 1 cm in a second, a gap held at every row.
    - The pair's own coordinates, not the scene's: one particle or pair flung far away made every gap below
