@@ -1666,7 +1666,7 @@ static MOTUS__NOINLINE void motus__tether_far(const motus__job *j, const motus__
 MOTUS__KI void motus__acceleration(const motus__job *j, const motus__lane *x, const motus__lane *v,
                                    const motus__lane *base, motus__lane inverse_mass, motus__mask movable,
                                    motus__lane *a, const int dims, const int coupled, const unsigned shape, int stage,
-                                   int i, int n) {
+                                   int i) {
     const unsigned t = MOTUS__TERMS(j, shape);
     const motus__lane zero = motus__splat(0);
     if (!MOTUS__EXACT_SHAPE(shape))
@@ -1708,7 +1708,8 @@ MOTUS__KI void motus__acceleration(const motus__job *j, const motus__lane *x, co
         MOTUS__EACH_D(a[d] = a_copy[d];);
     }
     if (coupled && (t & MOTUS__T_COUPLED))
-        MOTUS__EACH_D(if (j->stage_force[stage][d]) a[d] = a[d] + motus__load(j->stage_force[stage][d] + i, 1, n) * inverse_mass;);
+        MOTUS__EACH_D(if (j->stage_force[stage][d]) /* whole groups (see motus__layout) */
+                          a[d] = a[d] + motus__load(j->stage_force[stage][d] + i, 1, MOTUS__LANES) * inverse_mass;);
     if (t & MOTUS__T_MASS) /* immovable: no acceleration (a NaN still shows in the check) */
         MOTUS__EACH_D(a[d] = motus__select(movable, a[d], zero););
 }
@@ -1720,12 +1721,13 @@ MOTUS__KI int motus__evaluate(const motus__job *j, int stage, const motus__lane 
                               const int dims, const int coupled, const unsigned shape, int i, int n) {
     if (coupled && j->record_stage == stage) {
         MOTUS__EACH_D(if (j->stage_x[d]) {
-                motus__store(j->stage_x[d] + i, x[d], 1, n);
-                motus__store(j->stage_v[d] + i, v[d], 1, n);
+                motus__store(j->stage_x[d] + i, x[d], 1, MOTUS__LANES); /* whole groups (motus__layout) */
+                motus__store(j->stage_v[d] + i, v[d], 1, MOTUS__LANES);
             });
         return 1;
     }
-    motus__acceleration(j, x, v, base, inverse_mass, movable, a, dims, coupled, shape, stage, i, n);
+    (void)n;
+    motus__acceleration(j, x, v, base, inverse_mass, movable, a, dims, coupled, shape, stage, i);
     return 0;
 }
 #define MOTUS__EVALUATE(stage, xs, vs, a)                                                                        \
@@ -2359,6 +2361,7 @@ MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_s
 typedef struct motus__layout {
     size_t coupled, copy, contacts, total;
     size_t table_size, pair_capacity; /* the contacts' hash table (a power of two) and pair list */
+    size_t stage_length; /* reals in each coupled stage array: the count rounded up to whole groups of lanes */
 } motus__layout;
 static int motus__layout_of(const motus_scene *scene, const motus_state *state, motus__layout *l) {
     const size_t n = (size_t)state->count, real = sizeof(motus_real), index = sizeof(int);
@@ -2366,6 +2369,9 @@ static int motus__layout_of(const motus_scene *scene, const motus_state *state, 
     const int dims = state->dimensions == 3 ? 3 : 2, contacts = scene->contacts.enabled != 0 && n > 0;
     size_t per_particle = 0;
     memset(l, 0, sizeof *l);
+    /* Whole groups, so that the general kernel reads and writes its last, partial group of a stage as it
+       does every other: one vector load or store, where n lanes one by one made it twice the code. */
+    l->stage_length = n + (size_t)(MOTUS__LANES - 1) - (n + (size_t)(MOTUS__LANES - 1)) % (size_t)MOTUS__LANES;
     if (motus__coupled(scene))
         /* stage positions and velocities, and each evaluation's coupled forces */
         l->coupled = (size_t)dims * (size_t)(2 + motus_method_evaluations(scene->method)) * real;
@@ -2388,8 +2394,8 @@ static int motus__layout_of(const motus_scene *scene, const motus_state *state, 
         l->contacts = 2 * pairs * 4 * real + ((size_t)dims + 10 + 2 * 2 * pairs) * index; /* pair lists: 2 */
     }
     per_particle = l->coupled + l->copy + l->contacts;
-    if (n > 0 && per_particle > ((size_t)-1 - 4 * index) / 2 / n) return 0;
-    l->coupled *= n, l->copy *= n, l->contacts *= n;
+    if (n > 0 && per_particle > ((size_t)-1 - 4 * index) / 2 / l->stage_length) return 0;
+    l->coupled *= l->stage_length, l->copy *= n, l->contacts *= n;
     if (contacts) l->contacts += (l->table_size + 1 + MOTUS__SLABS + 1) * index;
     l->total = l->coupled + l->copy + l->contacts;
     return 1;
@@ -2546,8 +2552,8 @@ static void motus__spring_force(const motus_spring *s, const motus_real *d, cons
 }
 
 /* The coupled forces of one stage into stage_force[stage]: zero, the callback, then the springs. */
-static void motus__stage_forces(const motus__job *j, const motus_scene *scene, int dims, int count, int stage,
-                                motus_real time) {
+static void motus__stage_forces(const motus__job *j, const motus_scene *scene, int dims, int count, int length,
+                                int stage, motus_real time) {
     motus_real *force[3] = {NULL, NULL, NULL};
     int d, k;
     /* -0, not +0: adding -0 changes no value (x + -0 is x, -0 included), so a stage with no coupled force
@@ -2584,6 +2590,12 @@ static void motus__stage_forces(const motus__job *j, const motus_scene *scene, i
             force[d][s->a] += f[d];
             if (s->b >= 0) force[d][s->b] -= f[d];
         }
+    }
+    /* The lanes past the last particle compute that particle again (as motus__load's repeated lanes do):
+       they get its force, so that they overflow only where it does. */
+    for (d = 0; d < dims; ++d) {
+        int i;
+        for (i = count; i < length; ++i) force[d][i] = force[d][count - 1];
     }
 }
 
@@ -3665,10 +3677,10 @@ static motus_result motus__step_substeps(const motus_scene *scene, const motus_s
     kernel = motus__kernel_for(scene->method, dims, coupled ? 0 : job.terms,
                                coupled || job.stride != 1 || count < MOTUS__LANES);
     for (d = 0; d < dims && coupled; ++d) {
-        job.stage_x[d] = memory + (size_t)d * (size_t)count;
-        job.stage_v[d] = memory + (size_t)(dims + d) * (size_t)count;
+        job.stage_x[d] = memory + (size_t)d * layout->stage_length;
+        job.stage_v[d] = memory + (size_t)(dims + d) * layout->stage_length;
         for (stage = 0; stage < evaluations; ++stage)
-            job.stage_force[stage][d] = memory + (size_t)((2 + stage) * dims + d) * (size_t)count;
+            job.stage_force[stage][d] = memory + (size_t)((2 + stage) * dims + d) * layout->stage_length;
     }
     substeps = job.substeps;
     job.substeps = 1;
@@ -3677,7 +3689,8 @@ static motus_result motus__step_substeps(const motus_scene *scene, const motus_s
         for (stage = 0; stage < evaluations && coupled; ++stage) {
             job.record_stage = stage;
             (void)kernel(&job, 0, count);
-            motus__stage_forces(&job, scene, dims, count, stage, motus__stage_time(scene->method, stage) * h);
+            motus__stage_forces(&job, scene, dims, count, (int)layout->stage_length, stage,
+                                motus__stage_time(scene->method, stage) * h);
         }
         job.record_stage = -1;
         job.apply_damping = substep == substeps - 1;

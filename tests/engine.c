@@ -282,7 +282,7 @@ static int paths_agree(const setup *s, uint32_t seed) {
     motus_scene scene, with_callback;
     motus_state sa, sb, sc, sd;
     noop_record record;
-    size_t scratch_bytes;
+    size_t scratch_bytes, stage_length;
     int step, ok = 1, unsupported;
     char what[240];
     random_seed(seed);
@@ -301,12 +301,14 @@ static int paths_agree(const setup *s, uint32_t seed) {
     record.dims = s->dims, record.count = s->count, record.calls = 0, record.bad = 0;
     record.evaluations = motus_method_evaluations(s->method);
     scratch_bytes = motus_scratch_size(&with_callback, &sd);
+    /* the stage arrays hold whole groups of lanes: the count rounded up to a multiple of MOTUS__LANES */
+    stage_length = ((size_t)s->count + (size_t)MOTUS__LANES - 1) / (size_t)MOTUS__LANES * (size_t)MOTUS__LANES;
     ENSURE(scratch_bytes <= sizeof SCRATCH);
 #ifdef MOTUS_CHECKED /* and a copy of the state to step (positions, velocities, forces, inverse masses) */
-    ENSURE(scratch_bytes == ((size_t)s->dims * (size_t)(2 + record.evaluations) + (size_t)(3 * s->dims + 1)) *
-                                sizeof(motus_real) * (size_t)s->count);
+    ENSURE(scratch_bytes == (size_t)s->dims * (size_t)(2 + record.evaluations) * sizeof(motus_real) * stage_length +
+                                (size_t)(3 * s->dims + 1) * sizeof(motus_real) * (size_t)s->count);
 #else
-    ENSURE(scratch_bytes == (size_t)s->dims * (size_t)(2 + record.evaluations) * sizeof(motus_real) * (size_t)s->count);
+    ENSURE(scratch_bytes == (size_t)s->dims * (size_t)(2 + record.evaluations) * sizeof(motus_real) * stage_length);
 #endif
     /* the exact stepper takes no quadratic drag, attractor or callback */
     unsupported = s->method == MOTUS_EXACT_LINEAR_DRAG && (s->terms & (T_QUADRATIC_DRAG | T_ATTRACTOR | T_TETHER));

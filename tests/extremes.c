@@ -637,7 +637,7 @@ TEST(spring_of_1e20_at_its_rest_length_of_1e20) {
             for (m = 0; m < 3; ++m) {
                 const motus_real L = (motus_real)1e20;
                 motus_real x[2] = {0, 0}, y[2] = {0, 0}, z[2] = {0, 0}, vx[2] = {0, 0}, vy[2] = {0, 0}, vz[2] = {0, 0};
-                motus_real scratch[64];
+                motus_real scratch[3 * 6 * 16]; /* 3D, 4 evaluations: 18 stage arrays of a group of lanes (at most 16) */
                 motus_spring spring;
                 motus_scene scene;
                 motus_state state;

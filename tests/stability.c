@@ -22,8 +22,9 @@
 #endif
 #define EPS ((double)MOTUS_REAL_EPSILON)
 #define CAPACITY 8
-/* Scratch for up to CAPACITY particles in 3D: (2 + 4 evaluations)*3 reals each is the most any method takes. */
-#define SCRATCH_REALS (6 * 3 * CAPACITY)
+/* Scratch for up to CAPACITY particles in 3D: (2 + 4 evaluations)*3 arrays is the most any method takes, each
+   rounded up to whole groups of lanes (at most 16). */
+#define SCRATCH_REALS (6 * 3 * (CAPACITY + 16))
 
 static motus_real not_a_number(void) { return (motus_real)NAN; }
 static motus_real infinity(void) { return (motus_real)HUGE_VAL; }

@@ -451,7 +451,7 @@ TEST(dt_zero_still_reports_bad_data) {
     motus_scene scene;
     motus_state state;
     motus_spring spring;
-    motus_real scratch[128];
+    motus_real scratch[512];
     int coupled;
     p.velocity.y = not_a_number();
     q.position.z = infinity();
@@ -897,7 +897,7 @@ TEST(motus_step_dt_zero_is_a_valid_no_op) {
                 motus_scene scene;
                 motus_state state;
                 motus_spring spring;
-                motus_real scratch[128];
+                motus_real scratch[512];
                 int i;
                 if (coupled && m == MOTUS_EXACT_LINEAR_DRAG) continue;
                 memset(&scene, 0, sizeof scene);
