@@ -504,7 +504,8 @@ MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_s
    the order the broadphase finds them (the particles from the bottom up, each with its neighbours in its
    half of the cells around it; the solver then sorts them by their upper particle): *found gets their
    number, the first `capacity` are written to pairs. scratch as for motus_step with contacts on. The
-   broadphase of the step, for game logic and tests. */
+   broadphase of the step, for game logic and tests. It reads positions and radii only: state.velocity,
+   force and inverse_mass may be NULL. */
 MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus_state *state, void *scratch,
                                            size_t scratch_bytes, motus_contact_pair *pairs, int capacity, int *found);
 /* The largest dt the scene's springs and drags allow for its method (Gershgorin bound, see >>methods);
@@ -2256,7 +2257,8 @@ MOTUS_API motus_result motus_scene_check(const motus_scene *scene, int dimension
 }
 
 /* The state's shape (not its data): O(1). */
-static motus_result motus__state_shape(const motus_state *state, int *dims, motus_check_report *report) {
+/* velocities: 1 where the caller reads them (every step); 0 for the broadphase alone, where they may be NULL. */
+static motus_result motus__state_shape(const motus_state *state, int *dims, motus_check_report *report, int velocities) {
     int d, e;
     if (!state) return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "state", -1);
     *dims = state->dimensions == 0 ? 2 : state->dimensions;
@@ -2268,7 +2270,8 @@ static motus_result motus__state_shape(const motus_state *state, int *dims, motu
     if (state->count == 0) return MOTUS_OK;
     for (d = 0; d < *dims; ++d) {
         if (!state->position[d]) return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "state.position", -1);
-        if (!state->velocity[d]) return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "state.velocity", -1);
+        if (!state->velocity[d] && velocities)
+            return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "state.velocity", -1);
         /* forces: all of the state's components, or none */
         if (!state->force[d] != !state->force[0])
             return motus__scene_fail(report, MOTUS_ERROR_NULL_POINTER, "state.force", -1);
@@ -2281,8 +2284,9 @@ static motus_result motus__state_shape(const motus_state *state, int *dims, motu
         return motus__scene_fail(report, MOTUS_ERROR_INVALID_COUNT, "state.count", -1);
     for (d = 0; d < *dims; ++d)
         for (e = 0; e < *dims; ++e)
-            if (state->position[d] == state->velocity[e] || (d != e && (state->position[d] == state->position[e] ||
-                                                                        state->velocity[d] == state->velocity[e])))
+            if ((state->velocity[e] && state->position[d] == state->velocity[e]) ||
+                (d != e && (state->position[d] == state->position[e] ||
+                            (state->velocity[d] && state->velocity[d] == state->velocity[e]))))
                 return motus__scene_fail(report, MOTUS_ERROR_ALIASING, "state.position/velocity", -1);
     return MOTUS_OK;
 }
@@ -2293,13 +2297,13 @@ static ptrdiff_t motus__radius_stride(const motus_state *state) {
     return stride == 0 ? 1 : stride;
 }
 
-MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_state *state, int first, int count,
-                                         motus_check_report *report) {
+static motus_result motus__state_check(const motus_scene *scene, const motus_state *state, int first, int count,
+                                       motus_check_report *report, int velocities) {
     motus_result result;
     int dims = 2, i, d, forces, radii;
     ptrdiff_t stride, radius_stride;
     motus__report(report, -1, MOTUS_FIELD_NONE, -1);
-    result = motus__state_shape(state, &dims, report);
+    result = motus__state_shape(state, &dims, report, velocities);
     if (result != MOTUS_OK) return result;
     radius_stride = motus__radius_stride(state);
     /* the radii are data only where the scene collides */
@@ -2315,7 +2319,7 @@ MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_s
                 motus__report(report, i, MOTUS_FIELD_POSITION, d);
                 return MOTUS_ERROR_NOT_FINITE;
             }
-        for (d = 0; d < dims; ++d)
+        for (d = 0; d < dims && velocities; ++d)
             if (!motus_real_is_finite(state->velocity[d][at])) {
                 motus__report(report, i, MOTUS_FIELD_VELOCITY, d);
                 return MOTUS_ERROR_NOT_FINITE;
@@ -2336,6 +2340,10 @@ MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_s
         }
     }
     return MOTUS_OK;
+}
+MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_state *state, int first, int count,
+                                         motus_check_report *report) {
+    return motus__state_check(scene, state, first, count, report, 1);
 }
 
 /* Tasks (see THREADS in >>contacts): particles are handed out MOTUS__TASK_MIN or more at a time, in at most
@@ -2598,10 +2606,11 @@ static void motus__stage_forces(const motus__job *j, const motus_scene *scene, i
 }
 
 /* The checks every step makes before it reads a particle: O(1), or O(springs). */
-static motus_result motus__step_checks(const motus_scene *scene, const motus_state *state, motus_real dt, int *dims) {
+static motus_result motus__step_checks(const motus_scene *scene, const motus_state *state, motus_real dt, int *dims,
+                                       int velocities) {
     motus_result result;
     if (!scene) return MOTUS_ERROR_NULL_POINTER;
-    result = motus__state_shape(state, dims, NULL);
+    result = motus__state_shape(state, dims, NULL, velocities);
     if (result != MOTUS_OK) return result;
     if (!motus__dt_valid(dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
     return motus_scene_check(scene, *dims, state->count, NULL);
@@ -2630,7 +2639,7 @@ MOTUS_API motus_result motus_step_range(const motus_scene *scene, const motus_st
     motus__job job;
     motus_result result;
     int dims = 2;
-    result = motus__step_checks(scene, state, dt, &dims);
+    result = motus__step_checks(scene, state, dt, &dims, 1);
     if (result != MOTUS_OK) return result;
     if (first < 0 || count < 0 || first > state->count || count > state->count - first) return MOTUS_ERROR_INVALID_COUNT;
     if (motus__coupled(scene) || scene->contacts.enabled) return MOTUS_ERROR_UNSUPPORTED;
@@ -2769,7 +2778,7 @@ static void motus__scan_task(void *context, int first, int count) {
             const motus_real r = motus__contact_r(j, i);
             if (r > largest_radius) largest_radius = r;
         }
-        for (d = 0; d < j->dims; ++d)
+        for (d = 0; d < j->dims && j->v[0]; ++d) /* NULL in motus_find_contacts: no velocity read */
             for (i = from; i < to; ++i) {
                 const motus_real v = j->v[d][(ptrdiff_t)i * j->stride], m = v < 0 ? -v : v;
                 if (m > largest_velocity) largest_velocity = m;
@@ -3730,7 +3739,7 @@ MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *s
     motus_result result;
     motus_real *memory = (motus_real *)scratch;
     int dims = 2, count;
-    result = motus__step_checks(scene, state, dt, &dims);
+    result = motus__step_checks(scene, state, dt, &dims, 1);
     if (result != MOTUS_OK) return result;
     count = state->count;
     if (!motus__coupled(scene) && !scene->contacts.enabled) {
@@ -3804,7 +3813,7 @@ MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus
     int dims = 2, i;
     if (!found || (capacity > 0 && !pairs)) return MOTUS_ERROR_NULL_POINTER;
     if (capacity < 0) return MOTUS_ERROR_INVALID_COUNT;
-    result = motus__step_checks(scene, state, 0, &dims);
+    result = motus__step_checks(scene, state, 0, &dims, 0); /* velocities are not read: they may be NULL */
     if (result != MOTUS_OK) return result;
     {
         motus_scene colliding = *scene; /* the layout of a scene with contacts on, whatever this one says */
@@ -3812,7 +3821,7 @@ MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus
         if (!motus__layout_of(&colliding, state, &layout) || scratch_bytes < layout.total ||
             (!scratch && state->count > 0) || (uintptr_t)scratch % offsetof(motus__align_probe, r) != 0)
             return MOTUS_ERROR_SCRATCH_TOO_SMALL;
-        result = motus_state_check(&colliding, state, 0, state->count, NULL); /* the radii too */
+        result = motus__state_check(&colliding, state, 0, state->count, NULL, 0); /* the radii too */
         if (result != MOTUS_OK) return result;
         if (state->count == 0) { /* no particles, no pairs (and no scratch needed) */
             *found = 0;
@@ -3843,7 +3852,7 @@ MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const
     ptrdiff_t stride;
     int dims = 2, i, d, k, count;
     if (!max_dt) return MOTUS_ERROR_NULL_POINTER;
-    result = motus__step_checks(scene, state, 0, &dims);
+    result = motus__step_checks(scene, state, 0, &dims, 1);
     if (result != MOTUS_OK) return result;
     count = state->count;
     stride = state->stride == 0 ? 1 : state->stride;

@@ -231,6 +231,22 @@ static void check_broadphase(const char *what) {
     ENSURE(found >= 0 && found <= 16 * CAPACITY);
     if (found > 16 * CAPACITY) return;
     for (i = 0; i < found; ++i) ENSURE(W.pairs[i].a < W.pairs[i].b);
+    { /* the broadphase reads no velocity, force or mass: without them, the same pairs in the same order */
+        static motus_contact_pair again[16 * CAPACITY];
+        motus_state positions_only = W.state;
+        int found_again = -1, d;
+        for (d = 0; d < 3; ++d) positions_only.velocity[d] = NULL, positions_only.force[d] = NULL;
+        positions_only.inverse_mass = NULL;
+        ENSURE_EQ_INT(motus_find_contacts(&W.scene, &positions_only, W.scratch, sizeof W.scratch, again, 16 * CAPACITY,
+                                          &found_again),
+                      MOTUS_OK);
+        ENSURE_EQ_INT(found_again, found);
+        ENSURE(memcmp(again, W.pairs, sizeof again[0] * (size_t)found) == 0);
+        positions_only.velocity[0] = W.x[1]; /* given, a velocity still may not be a position */
+        ENSURE_EQ_INT(motus_find_contacts(&W.scene, &positions_only, W.scratch, sizeof W.scratch, again, 16 * CAPACITY,
+                                          &found_again),
+                      MOTUS_ERROR_ALIASING);
+    }
     qsort(W.pairs, (size_t)found, sizeof W.pairs[0], pair_order);
     for (i = 0; i < n; ++i)
         for (j = i + 1; j < n; ++j)
