@@ -1558,18 +1558,20 @@ enum {
    - MOTUS__SHAPE_ANY, the general kernel (any stride, coupling, the dry run): every term read from the job
      at run time, gravity and linear drag always computed as a = (F/m + g) - k*v (g = 0, k = 0 when off);
    - MOTUS__SHAPE_ALL, the fast kernel for any scene: the same, over plain arrays, without coupling;
-   - a set of terms (gravity alone, gravity and linear drag, each with or without damping and walls): a
-     fast kernel for exactly that scene, with nothing tested at run time but the damping and the walls (a
-     predictable branch a group of particles: a kernel of its own for each would double the kernels to
-     compile) and no work for what it lacks. These are the common scenes (a game's particles under gravity
-     in a box); they give the bits the others give (g is stored as g + 0, so a = g here is (0 + g) - v*0
-     there, exactly).
+   - a set of terms (gravity alone, gravity and linear drag, each with or without damping): a fast kernel
+     for exactly that scene, with nothing tested at run time but the damping (a predictable branch a group
+     of particles, once a step: a kernel of its own for each cost 25% more kernels to compile, 0.2 s) and no
+     work for what it lacks. These are the common scenes; they give
+     the bits the others give (g is stored as g + 0, so a = g here is (0 + g) - v*0 there, exactly). Not
+     even a test for walls: a call in the loop, taken or not, costs these kernels 5% in float and 60% in
+     double at -O2 (every vector register is the caller's to save), so scenes with walls run the kernel for
+     any scene, whose walls skip the groups that reach none.
    Terms tested at run time cost a predictable branch per group of particles; gravity and drag computed at
    0 cost two operations. */
 #define MOTUS__SHAPE_ANY 0x80000000u
 #define MOTUS__SHAPE_ALL 0x40000000u
-#define MOTUS__SHAPE_GRAVITY ((unsigned)(MOTUS__T_GRAVITY | MOTUS__T_DAMPING | MOTUS__T_BOUNDS))
-#define MOTUS__SHAPE_GRAVITY_DRAG ((unsigned)(MOTUS__T_GRAVITY | MOTUS__T_LINEAR_DRAG | MOTUS__T_DAMPING | MOTUS__T_BOUNDS))
+#define MOTUS__SHAPE_GRAVITY ((unsigned)(MOTUS__T_GRAVITY | MOTUS__T_DAMPING))
+#define MOTUS__SHAPE_GRAVITY_DRAG ((unsigned)(MOTUS__T_GRAVITY | MOTUS__T_LINEAR_DRAG | MOTUS__T_DAMPING))
 #define MOTUS__EXACT_SHAPE(shape) ((shape) != MOTUS__SHAPE_ANY && (shape) != MOTUS__SHAPE_ALL)
 #define MOTUS__TERMS(j, shape)                                                                                   \
     ((shape) == MOTUS__SHAPE_ANY   ? (j)->terms                                                                  \
@@ -1902,7 +1904,8 @@ MOTUS__KI void motus__walls_axis(const motus__job *j, motus__lane *x_in, motus__
 }
 /* The walls of every axis. An axis's walls change nothing unless a lane is past one of them (a NaN is past
    none): most groups of most steps pay two compares an axis, and a pile on the floor pays for the floor
-   only. Inline in the kernels for gravity, out of line in the others (see motus__group_substep_end). */
+   only. Out of line, as the costly terms: a call per group is small next to a dozen selects an axis, and
+   it keeps every kernel small enough to compile fast. */
 MOTUS__KI void motus__walls(const motus__job *j, motus__lane *x, motus__lane *v, const int dims) {
     MOTUS__EACH_D(
         if (motus__any((motus__mask)(x[d] < j->bounds_min[d]) | (motus__mask)(x[d] > j->bounds_max[d])))
@@ -1961,31 +1964,18 @@ MOTUS__KI void motus__group_substep_end(const motus__job *j, motus__group *g, mo
     /* x - x is 0 for a finite x and NaN for the rest: a sum of them cannot overflow, so a check that is not
        finite means a value that is not (a sum of the values themselves overflows near the largest real) */
     MOTUS__EACH_D(check[d] = check[d] + ((g->x[d] - g->x[d]) + (g->v[d] - g->v[d])););
-    if ((t & MOTUS__T_BOUNDS) && (j->terms & MOTUS__T_BOUNDS)) {
-        /* Only a group with a lane past a wall (a NaN is past none) does more than these compares. */
-        motus__mask past = (motus__mask)(g->x[0] < j->bounds_min[0]) | (motus__mask)(g->x[0] > j->bounds_max[0]);
+    if (t & MOTUS__T_BOUNDS) { /* through copies, as the costly terms */
+        motus__lane x_copy[3], v_copy[3];
         MOTUS__EACH_D(
-            if (d > 0) past = past | (motus__mask)(g->x[d] < j->bounds_min[d]) | (motus__mask)(g->x[d] > j->bounds_max[d]);
-        );
-        if (motus__any(past) && MOTUS__EXACT_SHAPE(shape)) {
-            /* Inline in the kernels for gravity: a call in their loop, taken or not, made the compiler keep
-               their values in memory (gravity without walls 10% slower in float at -O2); inline, a scene
-               with walls runs 1.6-2.3x faster at -O2 than on the kernel for any scene, and one without
-               walls as fast as before. It costs the unit 0.5 s of compile time. */
-            motus__walls(j, g->x, g->v, dims);
-        } else if (motus__any(past)) { /* the other kernels: out of line, through copies, as the costly terms */
-            motus__lane x_copy[3], v_copy[3];
-            MOTUS__EACH_D(
-                x_copy[d] = g->x[d];
-                v_copy[d] = g->v[d];
-            );
-            if (dims == 2) motus__walls_2(j, x_copy, v_copy);
-            else motus__walls_3(j, x_copy, v_copy);
-            MOTUS__EACH_D(
-                g->x[d] = x_copy[d];
-                g->v[d] = v_copy[d];
-            );
-        }
+            x_copy[d] = g->x[d];
+            v_copy[d] = g->v[d];
+    );
+        if (dims == 2) motus__walls_2(j, x_copy, v_copy);
+        else motus__walls_3(j, x_copy, v_copy);
+        MOTUS__EACH_D(
+            g->x[d] = x_copy[d];
+            g->v[d] = v_copy[d];
+    );
     }
 }
 /* The damping (once per motus_step, after the last substep), then the stores. */
@@ -2103,7 +2093,7 @@ static motus__kernel_function motus__kernel_for(motus_method method, int dims, u
         MOTUS__ROW(forest_ruth) MOTUS__ROW(exact_linear_drag)};
 #undef MOTUS__ROW
     /* Drift (no term) takes the gravity kernel with g = 0: adding +0 to +0 changes nothing. */
-    const unsigned exact = terms | MOTUS__T_GRAVITY | MOTUS__T_DAMPING | MOTUS__T_BOUNDS; /* tested in the kernel */
+    const unsigned exact = terms | MOTUS__T_GRAVITY | MOTUS__T_DAMPING; /* damping: tested in the kernel */
     const int shape = exact == MOTUS__SHAPE_GRAVITY ? 1 : exact == MOTUS__SHAPE_GRAVITY_DRAG ? 2 : 0;
     return kernels[method][general ? 6 : (dims - 2) * 3 + shape];
 #else
