@@ -1904,8 +1904,11 @@ MOTUS__KI void motus__walls_axis(const motus__job *j, motus__lane *x_in, motus__
 }
 /* The walls of every axis. An axis's walls change nothing unless a lane is past one of them (a NaN is past
    none): most groups of most steps pay two compares an axis, and a pile on the floor pays for the floor
-   only. Out of line, as the costly terms: a call per group is small next to a dozen selects an axis, and
-   it keeps every kernel small enough to compile fast. */
+   only. Out of line, as the costly terms, and called only for a group with a lane past a wall. Tried and
+   not kept: the walls inline in the kernels for gravity, so that a scene with walls need not run the
+   kernel for any scene: such scenes ran 1.6-2.5x faster at -O2 (1.1-1.5x native), but the unit took 1 s
+   longer to compile (a third more) with kernels of their own, or gravity alone ran 11-36% slower at -O2
+   with the walls tested at run time. */
 MOTUS__KI void motus__walls(const motus__job *j, motus__lane *x, motus__lane *v, const int dims) {
     MOTUS__EACH_D(
         if (motus__any((motus__mask)(x[d] < j->bounds_min[d]) | (motus__mask)(x[d] > j->bounds_max[d])))
@@ -1964,18 +1967,26 @@ MOTUS__KI void motus__group_substep_end(const motus__job *j, motus__group *g, mo
     /* x - x is 0 for a finite x and NaN for the rest: a sum of them cannot overflow, so a check that is not
        finite means a value that is not (a sum of the values themselves overflows near the largest real) */
     MOTUS__EACH_D(check[d] = check[d] + ((g->x[d] - g->x[d]) + (g->v[d] - g->v[d])););
-    if (t & MOTUS__T_BOUNDS) { /* through copies, as the costly terms */
-        motus__lane x_copy[3], v_copy[3];
+    if (t & MOTUS__T_BOUNDS) {
+        /* Only a group with a lane past a wall (a NaN is past none) makes the call: out of line, through
+           copies, as the costly terms. */
+        motus__mask past = (motus__mask)(g->x[0] < j->bounds_min[0]) | (motus__mask)(g->x[0] > j->bounds_max[0]);
         MOTUS__EACH_D(
-            x_copy[d] = g->x[d];
-            v_copy[d] = g->v[d];
-    );
-        if (dims == 2) motus__walls_2(j, x_copy, v_copy);
-        else motus__walls_3(j, x_copy, v_copy);
-        MOTUS__EACH_D(
-            g->x[d] = x_copy[d];
-            g->v[d] = v_copy[d];
-    );
+            if (d > 0) past = past | (motus__mask)(g->x[d] < j->bounds_min[d]) | (motus__mask)(g->x[d] > j->bounds_max[d]);
+        );
+        if (motus__any(past)) {
+            motus__lane x_copy[3], v_copy[3];
+            MOTUS__EACH_D(
+                x_copy[d] = g->x[d];
+                v_copy[d] = g->v[d];
+            );
+            if (dims == 2) motus__walls_2(j, x_copy, v_copy);
+            else motus__walls_3(j, x_copy, v_copy);
+            MOTUS__EACH_D(
+                g->x[d] = x_copy[d];
+                g->v[d] = v_copy[d];
+            );
+        }
     }
 }
 /* The damping (once per motus_step, after the last substep), then the stores. */
