@@ -2789,8 +2789,8 @@ static void motus__scan_task(void *context, int first, int count) {
             const motus_real r = motus__contact_r(j, i);
             if (r > largest_radius) largest_radius = r;
         }
-        for (d = 0; d < j->dims && j->v[0]; ++d) /* NULL in motus_find_contacts: no velocity read */
-            for (i = from; i < to; ++i) {
+        for (d = 0; d < j->dims; ++d)
+            for (i = from; i < to && j->v[d]; ++i) { /* NULL in motus_find_contacts: not read */
                 const motus_real v = j->v[d][(ptrdiff_t)i * j->stride], m = v < 0 ? -v : v;
                 if (m > largest_velocity) largest_velocity = m;
             }

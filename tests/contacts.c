@@ -242,6 +242,12 @@ static void check_broadphase(const char *what) {
                       MOTUS_OK);
         ENSURE_EQ_INT(found_again, found);
         ENSURE(memcmp(again, W.pairs, sizeof again[0] * (size_t)found) == 0);
+        positions_only.velocity[0] = W.v[0]; /* some velocities given, not all (the fuzzer's case) */
+        found_again = -1;
+        ENSURE_EQ_INT(motus_find_contacts(&W.scene, &positions_only, W.scratch, sizeof W.scratch, again, 16 * CAPACITY,
+                                          &found_again),
+                      MOTUS_OK);
+        ENSURE_EQ_INT(found_again, found);
         positions_only.velocity[0] = W.x[1]; /* given, a velocity still may not be a position */
         ENSURE_EQ_INT(motus_find_contacts(&W.scene, &positions_only, W.scratch, sizeof W.scratch, again, 16 * CAPACITY,
                                           &found_again),
