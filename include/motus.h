@@ -864,6 +864,54 @@ MOTUS_DEF motus_result motus__bounce(motus_vec3 *x, motus_vec3 *v, motus_vec3 lo
     return MOTUS_OK;
 }
 
+/* ---- the common path of the textbook calls ----
+   A game calls these on every particle every frame, so each does the common case first: compute, test the
+   result with one branch, store; anything else (a rejection, an immovable particle, a step of nothing, a
+   particle at or past a wall) goes to the full function out of line (MOTUS__RARE), which says why and
+   writes nothing on a rejection. Both paths compute the same bits. */
+#if defined(__GNUC__) || defined(__clang__)
+#define MOTUS__RARE static __attribute__((noinline, cold, unused))
+#define MOTUS__LIKELY(x) __builtin_expect(!!(x), 1)
+#else
+#define MOTUS__RARE static
+#define MOTUS__LIKELY(x) (x)
+#endif
+/* A value the compiler must take as it is. The step reads inverse_mass right after add_force wrote the
+   force beside it; GCC's vectoriser (on at -O2 since GCC 12) loads the two as one 8-byte pair, which the
+   CPU cannot forward from the 4-byte store to half of it: a stall per particle that made the 3D textbook
+   calls 2x slower. Read through this, inverse_mass is a load of its own. */
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
+#define MOTUS__OPAQUE(x) __asm__("" : "+x"(x))
+#elif (defined(__GNUC__) || defined(__clang__)) && defined(__aarch64__)
+#define MOTUS__OPAQUE(x) __asm__("" : "+w"(x))
+#else
+#define MOTUS__OPAQUE(x) (void)0
+#endif
+/* v + ((F*(1/m) + 0) - v*0)*dt: motus__step's velocity (see there why the zeros). */
+MOTUS_DEF motus_real motus__kick(motus_real v, motus_real force, motus_real inverse_mass, motus_real dt) {
+    return v + MOTUS__ROUND(((MOTUS__ROUND(force * inverse_mass) + 0) - MOTUS__ROUND(v * 0)) * dt);
+}
+/* The walls leave a particle strictly inside them alone: lo < x < hi also says x is finite and the walls
+   are valid there (not NaN, lo < hi, lo below the largest real, hi above its negative). */
+MOTUS_DEF int motus__inside(motus_real x, motus_real lo, motus_real hi) { return (lo < x) & (x < hi); }
+/* Why a sum of forces is not finite: a term was not, or the sum overflowed. */
+MOTUS__RARE motus_result motus__add_force_error(motus_vec3 old, motus_vec3 force, int dims) {
+    return (motus__finite_in(force, dims) & motus__finite_in(old, dims)) ? MOTUS_ERROR_OVERFLOW
+                                                                         : MOTUS_ERROR_NOT_FINITE;
+}
+MOTUS__RARE motus_result motus__step_rare(motus_vec3 *position, motus_vec3 *velocity, motus_vec3 force,
+                                          motus_real inverse_mass, motus_real dt, int dims) {
+    return motus__step(position, velocity, force, inverse_mass, dt, dims);
+}
+MOTUS__RARE motus_result motus__damp_rare(motus_vec3 *velocity, motus_real inverse_mass, motus_real damping, int dims) {
+    if (!motus__fraction_valid(damping)) return MOTUS_ERROR_INVALID_DAMPING;
+    return motus__damp3(velocity, inverse_mass, MOTUS_R(1.0) - damping, dims);
+}
+MOTUS__RARE motus_result motus__bounce_rare(motus_vec3 *x, motus_vec3 *v, motus_vec3 lo, motus_vec3 hi,
+                                            motus_real restitution, int dims) {
+    return motus__bounce(x, v, lo, hi, restitution, dims);
+}
+
 /* ---- the 2D particle functions ---- */
 /* A particle at rest at `position` with no force; mass finite and > 0 with 1/mass finite. */
 MOTUS_DEF motus_result motus_particle_init(motus_particle *particle, motus_vec2 position, motus_real mass) {
@@ -899,15 +947,17 @@ MOTUS_DEF motus_result motus_particle_check(const motus_particle *particle) {
 }
 /* Adds `force` to the accumulator; rejects a non-finite force and a sum that would overflow. */
 MOTUS_DEF motus_result motus_particle_add_force(motus_particle *particle, motus_vec2 force) {
-    motus_vec2 sum;
+    motus_real x, y;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     /* A NaN or Inf among the terms makes the sum so: one test, and the cause only on failure. */
-    sum = motus_vec2_add(particle->force, force);
-    if (!motus_vec2_is_finite(sum))
-        return (motus_vec2_is_finite(force) & motus_vec2_is_finite(particle->force)) ? MOTUS_ERROR_OVERFLOW
-                                                                                      : MOTUS_ERROR_NOT_FINITE;
-    particle->force = sum;
-    return MOTUS_OK;
+    x = particle->force.x + force.x;
+    y = particle->force.y + force.y;
+    if (MOTUS__LIKELY(motus_real_is_finite(x) & motus_real_is_finite(y))) {
+        particle->force.x = x;
+        particle->force.y = y;
+        return MOTUS_OK;
+    }
+    return motus__add_force_error(motus__v3_of(particle->force), motus__v3_of(force), 2);
 }
 MOTUS_DEF motus_result motus_particle_clear_forces(motus_particle *particle) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
@@ -917,11 +967,27 @@ MOTUS_DEF motus_result motus_particle_clear_forces(motus_particle *particle) {
 /* Semi-implicit Euler with the accumulated force (see motus__step). Does not clear the force. */
 MOTUS_DEF motus_result motus_particle_step(motus_particle *particle, motus_real dt) {
     motus_vec3 x, v;
+    motus_real im, vx, vy, xx, xy;
     motus_result result;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    /* The common case: a movable particle, dt > 0, a finite result. A finite x then says that v, F, 1/m
+       and dt were finite and nothing overflowed (a NaN or Inf anywhere makes x so). */
+    im = particle->inverse_mass;
+    MOTUS__OPAQUE(im);
+    vx = motus__kick(particle->velocity.x, particle->force.x, im, dt);
+    vy = motus__kick(particle->velocity.y, particle->force.y, im, dt);
+    xx = particle->position.x + MOTUS__ROUND(vx * dt);
+    xy = particle->position.y + MOTUS__ROUND(vy * dt);
+    if (MOTUS__LIKELY((dt > 0) & (im > 0) & motus_real_is_finite(xx) & motus_real_is_finite(xy))) {
+        particle->velocity.x = vx;
+        particle->velocity.y = vy;
+        particle->position.x = xx;
+        particle->position.y = xy;
+        return MOTUS_OK;
+    }
     x = motus__v3_of(particle->position);
     v = motus__v3_of(particle->velocity);
-    result = motus__step(&x, &v, motus__v3_of(particle->force), particle->inverse_mass, dt, 2);
+    result = motus__step_rare(&x, &v, motus__v3_of(particle->force), particle->inverse_mass, dt, 2);
     if (result == MOTUS_OK && dt != 0) {
         particle->position = motus__v2_of(x);
         particle->velocity = motus__v2_of(v);
@@ -949,11 +1015,19 @@ MOTUS_DEF motus_result motus_particle_step_compensated(motus_particle *particle,
    Frame-rate dependent; damp_per_second is not. damping in [0, 1]. */
 MOTUS_DEF motus_result motus_particle_damp_per_step(motus_particle *particle, motus_real damping) {
     motus_vec3 v;
+    motus_real kept = MOTUS_R(1.0) - damping, vx, vy;
     motus_result result;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    if (!motus__fraction_valid(damping)) return MOTUS_ERROR_INVALID_DAMPING;
+    vx = particle->velocity.x;
+    vy = particle->velocity.y;
+    if (MOTUS__LIKELY(motus__fraction_valid(damping) & (kept != 1) & (particle->inverse_mass != 0) &
+                      motus_real_is_finite(vx) & motus_real_is_finite(vy))) {
+        particle->velocity.x = motus__damp(vx, kept);
+        particle->velocity.y = motus__damp(vy, kept);
+        return MOTUS_OK;
+    }
     v = motus__v3_of(particle->velocity);
-    result = motus__damp3(&v, particle->inverse_mass, MOTUS_R(1.0) - damping, 2);
+    result = motus__damp_rare(&v, particle->inverse_mass, damping, 2);
     if (result == MOTUS_OK) particle->velocity = motus__v2_of(v);
     return result;
 }
@@ -977,9 +1051,14 @@ MOTUS_DEF motus_result motus_particle_bounce(motus_particle *particle, motus_vec
     motus_vec3 x, v;
     motus_result result;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
+    if (MOTUS__LIKELY(motus__inside(particle->position.x, bounds_min.x, bounds_max.x) &
+                      motus__inside(particle->position.y, bounds_min.y, bounds_max.y) &
+                      motus__fraction_valid(restitution) & motus_real_is_finite(particle->velocity.x) &
+                      motus_real_is_finite(particle->velocity.y)))
+        return MOTUS_OK; /* nothing to bounce off, nothing to report */
     x = motus__v3_of(particle->position);
     v = motus__v3_of(particle->velocity);
-    result = motus__bounce(&x, &v, motus__v3_of(bounds_min), motus__v3_of(bounds_max), restitution, 2);
+    result = motus__bounce_rare(&x, &v, motus__v3_of(bounds_min), motus__v3_of(bounds_max), restitution, 2);
     if (result == MOTUS_OK) {
         particle->position = motus__v2_of(x);
         particle->velocity = motus__v2_of(v);
@@ -1016,14 +1095,18 @@ MOTUS_DEF motus_result motus_particle3_check(const motus_particle3 *particle) {
     return motus__check(particle->position, particle->velocity, particle->force, particle->inverse_mass);
 }
 MOTUS_DEF motus_result motus_particle3_add_force(motus_particle3 *particle, motus_vec3 force) {
-    motus_vec3 sum;
+    motus_real x, y, z;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    sum = motus_vec3_add(particle->force, force);
-    if (!motus_vec3_is_finite(sum))
-        return (motus_vec3_is_finite(force) & motus_vec3_is_finite(particle->force)) ? MOTUS_ERROR_OVERFLOW
-                                                                                      : MOTUS_ERROR_NOT_FINITE;
-    particle->force = sum;
-    return MOTUS_OK;
+    x = particle->force.x + force.x;
+    y = particle->force.y + force.y;
+    z = particle->force.z + force.z;
+    if (MOTUS__LIKELY(motus_real_is_finite(x) & motus_real_is_finite(y) & motus_real_is_finite(z))) {
+        particle->force.x = x;
+        particle->force.y = y;
+        particle->force.z = z;
+        return MOTUS_OK;
+    }
+    return motus__add_force_error(particle->force, force, 3);
 }
 MOTUS_DEF motus_result motus_particle3_clear_forces(motus_particle3 *particle) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
@@ -1031,8 +1114,28 @@ MOTUS_DEF motus_result motus_particle3_clear_forces(motus_particle3 *particle) {
     return MOTUS_OK;
 }
 MOTUS_DEF motus_result motus_particle3_step(motus_particle3 *particle, motus_real dt) {
+    motus_real im, vx, vy, vz, xx, xy, xz;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    return motus__step(&particle->position, &particle->velocity, particle->force, particle->inverse_mass, dt, 3);
+    im = particle->inverse_mass; /* the common case, as motus_particle_step */
+    MOTUS__OPAQUE(im);
+    vx = motus__kick(particle->velocity.x, particle->force.x, im, dt);
+    vy = motus__kick(particle->velocity.y, particle->force.y, im, dt);
+    vz = motus__kick(particle->velocity.z, particle->force.z, im, dt);
+    xx = particle->position.x + MOTUS__ROUND(vx * dt);
+    xy = particle->position.y + MOTUS__ROUND(vy * dt);
+    xz = particle->position.z + MOTUS__ROUND(vz * dt);
+    if (MOTUS__LIKELY((dt > 0) & (im > 0) & motus_real_is_finite(xx) & motus_real_is_finite(xy) &
+                      motus_real_is_finite(xz))) {
+        particle->velocity.x = vx;
+        particle->velocity.y = vy;
+        particle->velocity.z = vz;
+        particle->position.x = xx;
+        particle->position.y = xy;
+        particle->position.z = xz;
+        return MOTUS_OK;
+    }
+    return motus__step_rare(&particle->position, &particle->velocity, particle->force, particle->inverse_mass, dt,
+                            3);
 }
 MOTUS_DEF motus_result motus_particle3_step_compensated(motus_particle3 *particle, motus_vec3 *carry, motus_real dt) {
     if (!particle || !carry) return MOTUS_ERROR_NULL_POINTER;
@@ -1040,9 +1143,19 @@ MOTUS_DEF motus_result motus_particle3_step_compensated(motus_particle3 *particl
                                    carry, dt, 3);
 }
 MOTUS_DEF motus_result motus_particle3_damp_per_step(motus_particle3 *particle, motus_real damping) {
+    motus_real kept = MOTUS_R(1.0) - damping, vx, vy, vz;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    if (!motus__fraction_valid(damping)) return MOTUS_ERROR_INVALID_DAMPING;
-    return motus__damp3(&particle->velocity, particle->inverse_mass, MOTUS_R(1.0) - damping, 3);
+    vx = particle->velocity.x;
+    vy = particle->velocity.y;
+    vz = particle->velocity.z;
+    if (MOTUS__LIKELY(motus__fraction_valid(damping) & (kept != 1) & (particle->inverse_mass != 0) &
+                      motus_real_is_finite(vx) & motus_real_is_finite(vy) & motus_real_is_finite(vz))) {
+        particle->velocity.x = motus__damp(vx, kept);
+        particle->velocity.y = motus__damp(vy, kept);
+        particle->velocity.z = motus__damp(vz, kept);
+        return MOTUS_OK;
+    }
+    return motus__damp_rare(&particle->velocity, particle->inverse_mass, damping, 3);
 }
 MOTUS_DEF motus_result motus_particle3_damp_per_second(motus_particle3 *particle, motus_real damping_per_second,
                                                        motus_real dt) {
@@ -1054,7 +1167,12 @@ MOTUS_DEF motus_result motus_particle3_damp_per_second(motus_particle3 *particle
 MOTUS_DEF motus_result motus_particle3_bounce(motus_particle3 *particle, motus_vec3 bounds_min, motus_vec3 bounds_max,
                                               motus_real restitution) {
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    return motus__bounce(&particle->position, &particle->velocity, bounds_min, bounds_max, restitution, 3);
+    if (MOTUS__LIKELY(motus__inside(particle->position.x, bounds_min.x, bounds_max.x) &
+                      motus__inside(particle->position.y, bounds_min.y, bounds_max.y) &
+                      motus__inside(particle->position.z, bounds_min.z, bounds_max.z) &
+                      motus__fraction_valid(restitution) & motus_vec3_is_finite(particle->velocity)))
+        return MOTUS_OK;
+    return motus__bounce_rare(&particle->position, &particle->velocity, bounds_min, bounds_max, restitution, 3);
 }
 
 /* The damping per second that a per-step damping amounts to at a fixed rate: 1 - (1 - d)^rate. The

@@ -9,6 +9,7 @@
 
 #include <float.h>
 #include <stddef.h>
+#include <string.h>
 
 #ifdef MOTUS_DOUBLE
 #define REAL_MAX DBL_MAX
@@ -771,6 +772,94 @@ TEST(state_of_particles_points_at_the_fields) {
     ENSURE(t.count == 0 && t.velocity[2] == NULL && t.force[0] == NULL && t.dimensions == 3);
 }
 
+/* The textbook calls take a short path for the common case and the full one (motus__step, motus__damp3,
+   motus__bounce) for the rest: on states and arguments drawn from values at every edge (signed zeros,
+   subnormals, the largest reals, NaN, Inf, walls on and past the particle), each call must return what the
+   full function returns and leave the same bits, 2D and 3D. */
+static motus_real edge_value(uint32_t *rng) {
+    const motus_real values[] = {0, -0.0f, 1, -1, MOTUS_R(0.5), MOTUS_R(3.25), MOTUS_R(-7.5), MOTUS_R(1e-3),
+                                 REAL_MIN_NORMAL, REAL_MIN_NORMAL / 4, -REAL_MIN_NORMAL / 8, REAL_MAX,
+                                 -REAL_MAX, REAL_MAX / 3, (motus_real)HUGE_VAL, -(motus_real)HUGE_VAL,
+                                 (motus_real)NAN, MOTUS_R(100.0), MOTUS_R(-250.0), MOTUS_R(1e6)};
+    const uint32_t pick = motus_test_xorshift32(rng);
+    if (pick % 3 == 0) return (motus_real)((double)(pick >> 8) / 16777216.0 * 20 - 10); /* mostly ordinary */
+    return values[(pick >> 8) % (sizeof values / sizeof values[0])];
+}
+static motus_real edge_fraction(uint32_t *rng) {
+    const motus_real values[] = {0, -0.0f, MOTUS_R(0.01), MOTUS_R(0.5), 1, MOTUS_R(1.5), -MOTUS_R(0.1),
+                                 (motus_real)NAN, MOTUS_R(1e-30), (motus_real)HUGE_VAL};
+    return values[motus_test_xorshift32(rng) % (sizeof values / sizeof values[0])];
+}
+static motus_vec3 edge_vec3(uint32_t *rng) { return motus_v3(edge_value(rng), edge_value(rng), edge_value(rng)); }
+static int same_bits(const void *a, const void *b, size_t size) { return memcmp(a, b, size) == 0; }
+
+TEST(textbook_calls_match_the_full_functions) {
+    uint32_t rng = 12345u;
+    int trial, dims;
+    for (trial = 0; trial < 20000; ++trial) {
+        for (dims = 2; dims <= 3; ++dims) {
+            motus_vec3 x = edge_vec3(&rng), v = edge_vec3(&rng), f = edge_vec3(&rng), push = edge_vec3(&rng);
+            motus_vec3 lo = edge_vec3(&rng), hi = edge_vec3(&rng), rx, rv, rf;
+            motus_real im = edge_value(&rng), dt = edge_value(&rng), damping = edge_fraction(&rng);
+            motus_real restitution = edge_fraction(&rng);
+            motus_result expected, got;
+            int call = (int)(motus_test_xorshift32(&rng) % 4);
+            if (motus_test_xorshift32(&rng) % 2) { /* walls around the particle, so that most calls are inside */
+                lo = motus_v3(x.x - 5, x.y - 5, x.z - 5);
+                hi = motus_v3(x.x + 5, x.y + 5, x.z + 5);
+            }
+            if (motus_test_xorshift32(&rng) % 4 == 0) im = 0;
+            if (dims == 2) x.z = v.z = f.z = push.z = lo.z = hi.z = 0;
+            rx = x, rv = v, rf = f;
+            /* the full function on the reference copy (what motus_particle_* did before the short path) */
+            if (call == 0) {
+                motus_vec3 sum = motus_vec3_add(rf, push);
+                expected = motus__finite_in(sum, dims) ? MOTUS_OK
+                           : (motus__finite_in(push, dims) & motus__finite_in(rf, dims)) ? MOTUS_ERROR_OVERFLOW
+                                                                                         : MOTUS_ERROR_NOT_FINITE;
+                if (expected == MOTUS_OK) rf = sum;
+            } else if (call == 1) {
+                expected = motus__step(&rx, &rv, rf, im, dt, dims);
+            } else if (call == 2) {
+                expected = motus__fraction_valid(damping) ? motus__damp3(&rv, im, MOTUS_R(1.0) - damping, dims)
+                                                          : MOTUS_ERROR_INVALID_DAMPING;
+            } else {
+                expected = motus__bounce(&rx, &rv, lo, hi, restitution, dims);
+            }
+            if (dims == 2) {
+                motus_particle p;
+                p.position = motus_v2(x.x, x.y), p.velocity = motus_v2(v.x, v.y), p.force = motus_v2(f.x, f.y);
+                p.inverse_mass = im;
+                got = call == 0   ? motus_particle_add_force(&p, motus_v2(push.x, push.y))
+                      : call == 1 ? motus_particle_step(&p, dt)
+                      : call == 2 ? motus_particle_damp_per_step(&p, damping)
+                                  : motus_particle_bounce(&p, motus_v2(lo.x, lo.y), motus_v2(hi.x, hi.y), restitution);
+                if (expected != MOTUS_OK) rx = x, rv = v, rf = f; /* a rejection writes nothing */
+                ENSURE_EQ_INT(got, expected);
+                ENSURE(same_bits(&p.position.x, &rx.x, sizeof(motus_real)) &&
+                       same_bits(&p.position.y, &rx.y, sizeof(motus_real)));
+                ENSURE(same_bits(&p.velocity.x, &rv.x, sizeof(motus_real)) &&
+                       same_bits(&p.velocity.y, &rv.y, sizeof(motus_real)));
+                ENSURE(same_bits(&p.force.x, &rf.x, sizeof(motus_real)) &&
+                       same_bits(&p.force.y, &rf.y, sizeof(motus_real)));
+            } else {
+                motus_particle3 p;
+                p.position = x, p.velocity = v, p.force = f, p.inverse_mass = im;
+                got = call == 0   ? motus_particle3_add_force(&p, push)
+                      : call == 1 ? motus_particle3_step(&p, dt)
+                      : call == 2 ? motus_particle3_damp_per_step(&p, damping)
+                                  : motus_particle3_bounce(&p, lo, hi, restitution);
+                if (expected != MOTUS_OK) rx = x, rv = v, rf = f;
+                ENSURE_EQ_INT(got, expected);
+                ENSURE(same_bits(&p.position, &rx, sizeof rx));
+                ENSURE(same_bits(&p.velocity, &rv, sizeof rv));
+                ENSURE(same_bits(&p.force, &rf, sizeof rf));
+            }
+            if (motus_test_failures) return;
+        }
+    }
+}
+
 TEST(particle_step_equals_the_scene_over_particles) {
     /* motus_particle_step is the semi-implicit Euler scene on accumulated forces, bit for bit, 2D and 3D. */
     motus_particle p[5], q[5];
@@ -1252,6 +1341,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(immovable_particle_ignores_forces_and_damping),
     TEST_CASE(immovable_particles_drift_in_every_method),
     TEST_CASE(state_of_particles_points_at_the_fields),
+    TEST_CASE(textbook_calls_match_the_full_functions),
     TEST_CASE(particle_step_equals_the_scene_over_particles),
     TEST_CASE(zeroed_scene_moves_1kg_particles_under_no_force),
     TEST_CASE(zeroed_scene_with_gravity_accelerates),
