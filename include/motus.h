@@ -759,6 +759,10 @@ MOTUS_DEF motus_result motus__check(motus_vec3 position, motus_vec3 velocity, mo
 MOTUS_DEF int motus__finite_in(motus_vec3 v, int dims) {
     return dims == 3 ? motus_vec3_is_finite(v) : motus_real_is_finite(v.x) & motus_real_is_finite(v.y);
 }
+/* The velocity of the step, one component: v + ((F*(1/m) + 0) - v*0)*dt (see motus__step why the zeros). */
+MOTUS_DEF motus_real motus__kick(motus_real v, motus_real force, motus_real inverse_mass, motus_real dt) {
+    return v + MOTUS__ROUND(((MOTUS__ROUND(force * inverse_mass) + 0) - MOTUS__ROUND(v * 0)) * dt);
+}
 MOTUS_DEF motus_result motus__step(motus_vec3 *position, motus_vec3 *velocity, motus_vec3 force,
                                    motus_real inverse_mass, motus_real dt, int dims) {
     motus_vec3 v, x;
@@ -769,10 +773,9 @@ MOTUS_DEF motus_result motus__step(motus_vec3 *position, motus_vec3 *velocity, m
     /* a = (F*(1/m) + g) - k*v with g = 0 and k = 0, as the engine computes it for a scene without gravity
        and drag (adding a zero and subtracting a v*0 change nothing but the sign of a zero), so that the two
        agree bit for bit, signed zeros included. */
-    v.x = velocity->x + MOTUS__ROUND(((MOTUS__ROUND(force.x * inverse_mass) + 0) - MOTUS__ROUND(velocity->x * 0)) * dt);
-    v.y = velocity->y + MOTUS__ROUND(((MOTUS__ROUND(force.y * inverse_mass) + 0) - MOTUS__ROUND(velocity->y * 0)) * dt);
-    v.z = dims == 3 ? velocity->z + MOTUS__ROUND(((MOTUS__ROUND(force.z * inverse_mass) + 0) -
-                                                  MOTUS__ROUND(velocity->z * 0)) * dt) : 0;
+    v.x = motus__kick(velocity->x, force.x, inverse_mass, dt);
+    v.y = motus__kick(velocity->y, force.y, inverse_mass, dt);
+    v.z = dims == 3 ? motus__kick(velocity->z, force.z, inverse_mass, dt) : 0;
     if (inverse_mass == 0) v = *velocity; /* immovable: forces do not change its velocity */
     x.x = position->x + MOTUS__ROUND(v.x * dt);
     x.y = position->y + MOTUS__ROUND(v.y * dt);
@@ -887,10 +890,6 @@ MOTUS_DEF motus_result motus__bounce(motus_vec3 *x, motus_vec3 *v, motus_vec3 lo
 #else
 #define MOTUS__OPAQUE(x) (void)0
 #endif
-/* v + ((F*(1/m) + 0) - v*0)*dt: motus__step's velocity (see there why the zeros). */
-MOTUS_DEF motus_real motus__kick(motus_real v, motus_real force, motus_real inverse_mass, motus_real dt) {
-    return v + MOTUS__ROUND(((MOTUS__ROUND(force * inverse_mass) + 0) - MOTUS__ROUND(v * 0)) * dt);
-}
 /* The walls leave a particle strictly inside them alone: lo < x < hi also says x is finite and the walls
    are valid there (not NaN, lo < hi, lo below the largest real, hi above its negative). */
 MOTUS_DEF int motus__inside(motus_real x, motus_real lo, motus_real hi) { return (lo < x) & (x < hi); }
