@@ -791,7 +791,6 @@ static motus_real edge_fraction(uint32_t *rng) {
     return values[motus_test_xorshift32(rng) % (sizeof values / sizeof values[0])];
 }
 static motus_vec3 edge_vec3(uint32_t *rng) { return motus_v3(edge_value(rng), edge_value(rng), edge_value(rng)); }
-static int same_bits(const void *a, const void *b, size_t size) { return memcmp(a, b, size) == 0; }
 
 TEST(textbook_calls_match_the_full_functions) {
     uint32_t rng = 12345u;
@@ -836,12 +835,12 @@ TEST(textbook_calls_match_the_full_functions) {
                                   : motus_particle_bounce(&p, motus_v2(lo.x, lo.y), motus_v2(hi.x, hi.y), restitution);
                 if (expected != MOTUS_OK) rx = x, rv = v, rf = f; /* a rejection writes nothing */
                 ENSURE_EQ_INT(got, expected);
-                ENSURE(same_bits(&p.position.x, &rx.x, sizeof(motus_real)) &&
-                       same_bits(&p.position.y, &rx.y, sizeof(motus_real)));
-                ENSURE(same_bits(&p.velocity.x, &rv.x, sizeof(motus_real)) &&
-                       same_bits(&p.velocity.y, &rv.y, sizeof(motus_real)));
-                ENSURE(same_bits(&p.force.x, &rf.x, sizeof(motus_real)) &&
-                       same_bits(&p.force.y, &rf.y, sizeof(motus_real)));
+                ENSURE(same_bytes(&p.position.x, &rx.x, sizeof(motus_real)) &&
+                       same_bytes(&p.position.y, &rx.y, sizeof(motus_real)));
+                ENSURE(same_bytes(&p.velocity.x, &rv.x, sizeof(motus_real)) &&
+                       same_bytes(&p.velocity.y, &rv.y, sizeof(motus_real)));
+                ENSURE(same_bytes(&p.force.x, &rf.x, sizeof(motus_real)) &&
+                       same_bytes(&p.force.y, &rf.y, sizeof(motus_real)));
             } else {
                 motus_particle3 p;
                 p.position = x, p.velocity = v, p.force = f, p.inverse_mass = im;
@@ -851,9 +850,9 @@ TEST(textbook_calls_match_the_full_functions) {
                                   : motus_particle3_bounce(&p, lo, hi, restitution);
                 if (expected != MOTUS_OK) rx = x, rv = v, rf = f;
                 ENSURE_EQ_INT(got, expected);
-                ENSURE(same_bits(&p.position, &rx, sizeof rx));
-                ENSURE(same_bits(&p.velocity, &rv, sizeof rv));
-                ENSURE(same_bits(&p.force, &rf, sizeof rf));
+                ENSURE(same_bytes(&p.position, &rx, sizeof rx));
+                ENSURE(same_bytes(&p.velocity, &rv, sizeof rv));
+                ENSURE(same_bytes(&p.force, &rf, sizeof rf));
             }
             if (motus_test_failures) return;
         }
