@@ -1488,14 +1488,12 @@ extern "C" {
 #define MOTUS__KI static inline
 #define MOTUS__PREFETCH(p) ((void)(p))
 #endif
-/* The kernels for gravity (with or without drag and damping) ask for the x and v they will read and write
-   MOTUS__PREFETCH_AHEAD particles ahead, in a call over at least MOTUS__PREFETCH_FROM particles (below
-   that the state is in cache and the requests would only cost). Why: RK4 and Forest-Ruth keep a group of
-   particles in registers for many dependent operations, so the out-of-order window held too few loads in
-   flight to keep memory busy: at 10^7 particles RK4 ran 1.17-1.23x the in-place bandwidth bound (x and v
+/* The fast kernels ask for the x and v they will read and write MOTUS__PREFETCH_AHEAD particles ahead, in a
+   call over at least MOTUS__PREFETCH_FROM particles (below that the state is in cache and the requests
+   would only cost). Why: RK4 and Forest-Ruth keep a group of particles in registers for many dependent
+   operations, so the out-of-order window held too few loads in flight to keep memory busy: at 10^7 particles RK4 ran 1.17-1.23x the in-place bandwidth bound (x and v
    read and written once) where a hand-written Euler loop runs 1.01-1.09x; with the requests, every method
-   0.96-1.11x. Not in the kernels for any scene: there GCC 12 (SSE2 double, -O2 and -O3) stops with an
-   internal compiler error in gimple-isel on the exact linear drag kernel. */
+   0.96-1.11x. */
 #ifndef MOTUS__PREFETCH_AHEAD
 #define MOTUS__PREFETCH_AHEAD 256
 #endif
@@ -1554,6 +1552,19 @@ typedef motus_real motus__lane_unaligned __attribute__((vector_size(MOTUS_SIMD_B
 typedef int motus__mask;
 typedef motus_real motus__lane;
 #define MOTUS__LANES 1
+#endif
+
+/* GCC 12 on x86 with SSE2 and no SSE4.1 (x86-64's default target) in double stops with an internal compiler
+   error (gimple-isel.cc:281, gimple_expand_vec_cond_expr) when jump threading leaves a comparison mask
+   merged from several paths (a PHI) as the condition of the blends that motus__select becomes: the kernels
+   for any scene hit it at -O2 -funsafe-math-optimizations, and with small changes to the kernels at plain
+   -O2 and -O3. Through an empty asm, the particles' mask is a plain integer vector to the compiler, and
+   motus__select stays the and/andnot/or it is written as (what SSE2 does for a blend anyway). */
+#if MOTUS__VECTOR && defined(__GNUC__) && !defined(__clang__) && defined(__SSE2__) && !defined(__SSE4_1__) && \
+    defined(MOTUS_DOUBLE) && MOTUS_SIMD_BYTES == 16
+#define MOTUS__MASK_BARRIER(mask) __asm__("" : "+x"(mask))
+#else
+#define MOTUS__MASK_BARRIER(mask) (void)0
 #endif
 
 MOTUS__KI motus__lane motus__splat(motus_real value) {
@@ -2072,6 +2083,7 @@ MOTUS__KI void motus__group_load(const motus__job *j, motus__group *g, int i, in
     g->at = (ptrdiff_t)i * g->stride;
     g->inverse_mass = (t & MOTUS__T_MASS) ? motus__load(j->inverse_mass + g->at, g->stride, n) : j->uniform_inverse_mass;
     g->movable = g->inverse_mass != zero;
+    MOTUS__MASK_BARRIER(g->movable);
     MOTUS__EACH_D(
         const int axis = MOTUS__AXIS(d);
         g->x[d] = axis ? motus__load(j->x[d] + g->at, g->stride, n) : zero;
@@ -2156,14 +2168,16 @@ MOTUS__KI void motus__group_finish(const motus__job *j, motus__group *g, const i
         int i, s, broken = 0, end_here = end, prefetch_end;                                                      \
         check[0] = check[1] = check[2] = motus__splat(0);                                                        \
         if (contiguous) end_here = first + (end - first) / MOTUS__LANES * MOTUS__LANES;                          \
-        prefetch_end = contiguous && MOTUS__EXACT_SHAPE(shape) && end_here - first >= MOTUS__PREFETCH_FROM       \
-                           ? end_here - MOTUS__PREFETCH_AHEAD                                                    \
-                           : first;                                                                              \
+        prefetch_end = contiguous && end_here - first >= MOTUS__PREFETCH_FROM ? end_here - MOTUS__PREFETCH_AHEAD  \
+                                                                               : first;                          \
         for (i = first; i < end_here; i += MOTUS__LANES) {                                                       \
             const int n = contiguous ? MOTUS__LANES : (end - i < MOTUS__LANES ? end - i : MOTUS__LANES);         \
-            if (i < prefetch_end)                                                                                \
-                MOTUS__EACH_D(MOTUS__PREFETCH(j->x[d] + i + MOTUS__PREFETCH_AHEAD);                              \
-                              MOTUS__PREFETCH(j->v[d] + i + MOTUS__PREFETCH_AHEAD););                            \
+            if (i < prefetch_end) {                                                                              \
+                const int ahead = i + MOTUS__PREFETCH_AHEAD;                                                     \
+                MOTUS__EACH_D(MOTUS__PREFETCH(j->x[d] + ahead); MOTUS__PREFETCH(j->v[d] + ahead);                \
+                              if (MOTUS__TERMS(j, shape) & MOTUS__T_FORCES) MOTUS__PREFETCH(j->f[d] + ahead););  \
+                if (MOTUS__TERMS(j, shape) & MOTUS__T_MASS) MOTUS__PREFETCH(j->inverse_mass + ahead);            \
+            }                                                                                                    \
             motus__group_load(j, &g, i, n, dims, contiguous, shape);                                             \
             motus__group_check_inputs(j, &g, check, dims, shape);                                                \
             for (s = 0; s < j->substeps; ++s) {                                                                  \
