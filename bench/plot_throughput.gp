@@ -29,7 +29,7 @@ set key top left Left reverse samplen 3 spacing 1.05 font "sans,11" opaque
 set style line 1 lc rgb "#d62728" lw 2.5 pt 5 ps 0.9    # textbook loop
 set style line 2 lc rgb "#7f7f7f" lw 2 dt 2 pt 6 ps 1.0 # hand-written loop
 set style line 3 lc rgb "#1f77b4" lw 3 pt 7 ps 0.9      # motus
-set style line 4 lc rgb "#9ecae1" lw 2.5 pt 9 ps 0.9    # motus general kernel
+set style line 4 lc rgb "#9ecae1" lw 2.5 pt 9 ps 0.9    # motus + walls nobody reaches (the kernel for any scene)
 set style line 5 lc rgb "#9467bd" lw 2.5 pt 11 ps 0.9   # motus, 2 threads
 set style line 6 lc rgb "#2ca02c" lw 2.5 pt 13 ps 0.9   # odeint symplectic_euler
 set style line 7 lc rgb "#98df8a" lw 2 pt 12 ps 0.9     # odeint velocity_verlet
@@ -48,7 +48,7 @@ if (has_native) {
             precision = word("float double", p)
             set title sprintf("%dD %s", dims, precision) font "sans,15"
             plot curve("native", dims, precision, "gravity_damping", "textbook") using 1:2 with linespoints ls 1 title "textbook path (motus\\_particle\\_*, N = 5000)", \
-                 curve("native", dims, precision, "gravity_damping", "general") using 1:2 with linespoints ls 4 title "motus general kernel", \
+                 curve("native", dims, precision, "gravity_damping", "general") using 1:2 with linespoints ls 4 title "motus + walls nobody reaches (kernel for any scene)", \
                  curve("native", dims, precision, "gravity", "odeint_symplectic_euler") using 1:2 with linespoints ls 6 title "odeint symplectic\\_euler (gravity)", \
                  curve("native", dims, precision, "gravity", "odeint_velocity_verlet") using 1:2 with linespoints ls 7 title "odeint velocity\\_verlet (gravity)", \
                  curve("native", dims, precision, "gravity_damping", "hand") using 1:2 with linespoints ls 2 title "hand-written loop", \
