@@ -29,12 +29,13 @@ parts=("$@")
 # test time, without the sanitizers, to check compilers and flags, not memory:
 # - determinism.matrix.*, determinism.contracted.*: determinism.c rebuilt by gcc and clang in 18 modes; the
 #   sanitized determinism.{float,double}.* run the same source, golden hashes included.
-# - compile.{gcc,clang,g++,clang++,tcc}.*, compile.fast_math_message.*: the warning matrix and the
-#   -ffast-math message (the programs they run, the unit tests run sanitized).
+# - compile.{gcc,clang,g++,clang++,tcc}.*, compile.fast_math_message.*, compile.flags.*: the warning
+#   matrix, the -ffast-math message and the engine compiled at other flags (the programs they run, the unit
+#   tests run sanitized; compile.flags runs nothing).
 # - consumer.*: CMake consumer projects built against the installed package, which carries no sanitizer.
 # - threads.tsan: tests/threads.c rebuilt with ThreadSanitizer, which does not mix with ASan (the normal
 #   tree runs it).
-asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|clang\+\+|tcc|fast_math_message)\.|consumer\.|threads\.tsan$)'
+asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|clang\+\+|tcc|fast_math_message|flags)\.|consumer\.|threads\.tsan$)'
 # Tests valgrind does not run (ctest -E), each for a reason:
 # - compile.engine.native.*, compile.engine.agree.*, compile.engine.clang.*, bench.throughput_quick_run: they
 #   run -march=native binaries, which on an AVX-512 machine use instructions valgrind cannot decode (SIGILL).
@@ -46,6 +47,7 @@ asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|cla
 # - consumer.*: the command is CMake (ctest --build-and-test); valgrind would check CMake, not motus.
 # - example.*: raylib programs in Xvfb with GLX on llvmpipe: under valgrind a frame takes longer than the key
 #   tests' timing allows, and what it reports is Mesa's; they run under ASan instead.
+# - compile.flags.*: the engine compiled (not run) at six flag sets: gcc's work, not motus's.
 # - compile.engine.*: engine.c rebuilt at every lane width (and -march=native, which valgrind cannot decode
 #   on an AVX-512 machine): 4-25 s each natively, half an hour under valgrind; the default build's engine.*
 #   runs under valgrind and ASan (the widths are checked for identical bits in the normal tree only).
@@ -62,7 +64,7 @@ asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|cla
 #   ones run natively and under ASan.
 # Script-driven tests (compile.gcc.* ...) run with --trace-children: valgrind follows the programs the script
 # starts from the build tree and skips system programs (compilers, shells' tools) by the skip patterns.
-valgrind_exclude='^(compile\.engine\.|determinism\.|consumer\.|example\.|bench\.|engine(_checked)?\.(float|double)\.paths_agree_|stability\.(float|double)\.ten_million_steps$|contacts\.[a-z_]+\.pile_of_2000_settles$|threads\.|render\.(double\.|canvas_centroid_accuracy$))'
+valgrind_exclude='^(compile\.(engine|flags)\.|determinism\.|consumer\.|example\.|bench\.|engine(_checked)?\.(float|double)\.paths_agree_|stability\.(float|double)\.ten_million_steps$|contacts\.[a-z_]+\.pile_of_2000_settles$|threads\.|render\.(double\.|canvas_centroid_accuracy$))'
 valgrind_options="--error-exitcode=1 --trace-children=yes --trace-children-skip=/usr/*,/bin/*,/sbin/* --leak-check=full --show-leak-kinds=definite --errors-for-leak-kinds=definite \
 --track-origins=yes --num-callers=30 --suppressions=$root/tests/support/valgrind.supp"
 
