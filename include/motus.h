@@ -1491,9 +1491,9 @@ extern "C" {
 /* The fast kernels ask for the x and v they will read and write MOTUS__PREFETCH_AHEAD particles ahead, in a
    call over at least MOTUS__PREFETCH_FROM particles (below that the state is in cache and the requests
    would only cost). Why: RK4 and Forest-Ruth keep a group of particles in registers for many dependent
-   operations, so the out-of-order window held too few loads in flight to keep memory busy: at 10^7 particles RK4 ran 1.17-1.23x the in-place bandwidth bound (x and v
-   read and written once) where a hand-written Euler loop runs 1.01-1.09x; with the requests, every method
-   0.96-1.11x. */
+   operations, so the out-of-order window held too few loads in flight to keep memory busy: at 10^7
+   particles RK4 ran 1.17-1.23x the in-place bandwidth bound (x and v read and written once) where a
+   hand-written Euler loop runs 1.01-1.09x; with the requests, every method 0.96-1.11x. */
 #ifndef MOTUS__PREFETCH_AHEAD
 #define MOTUS__PREFETCH_AHEAD 256
 #endif
