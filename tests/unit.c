@@ -786,8 +786,10 @@ static motus_real edge_value(uint32_t *rng) {
     return values[(pick >> 8) % (sizeof values / sizeof values[0])];
 }
 static motus_real edge_fraction(uint32_t *rng) {
+    /* 1 + 2^-20 and 1 - 2^-20: just past and just inside 1 in float and double */
     const motus_real values[] = {0, -0.0f, MOTUS_R(0.01), MOTUS_R(0.5), 1, MOTUS_R(1.5), -MOTUS_R(0.1),
-                                 (motus_real)NAN, MOTUS_R(1e-30), (motus_real)HUGE_VAL};
+                                 (motus_real)NAN, MOTUS_R(1e-30), (motus_real)HUGE_VAL,
+                                 MOTUS_R(1.00000095367431640625), MOTUS_R(0.99999904632568359375)};
     return values[motus_test_xorshift32(rng) % (sizeof values / sizeof values[0])];
 }
 static motus_vec3 edge_vec3(uint32_t *rng) { return motus_v3(edge_value(rng), edge_value(rng), edge_value(rng)); }
