@@ -28,6 +28,7 @@ set key top left Left reverse samplen 3 spacing 1.05 font "sans,11" opaque
 # ---- one style per method --------------------------------------------------------------------------------
 set style line 1 lc rgb "#d62728" lw 2.5 pt 5 ps 0.9    # textbook loop
 set style line 2 lc rgb "#7f7f7f" lw 2 dt 2 pt 6 ps 1.0 # hand-written loop
+set style line 14 lc rgb "#d62728" lw 1.5 pt 4 ps 1.1   # the textbook loop written by hand
 set style line 3 lc rgb "#1f77b4" lw 3 pt 7 ps 0.9      # motus
 set style line 4 lc rgb "#9ecae1" lw 2.5 pt 9 ps 0.9    # motus + walls nobody reaches (the kernel for any scene)
 set style line 5 lc rgb "#9467bd" lw 2.5 pt 11 ps 0.9   # motus, 2 threads
@@ -43,11 +44,13 @@ if (has_native) {
     set terminal pngcairo size 2000,1500 enhanced font "sans,13" linewidth 1.2
     set output out."/throughput.png"
     set multiplot layout 2,2 title "ns per particle-step against N: gravity + damping (odeint: gravity alone), -O3 -march=native, median of the rounds\n".machine_native font "sans,16"
+    set yrange [0.1:1000] # room above the data for the (opaque) legend: it hid the textbook point at N = 5000
     do for [dims=2:3] {
         do for [p=1:2] {
             precision = word("float double", p)
             set title sprintf("%dD %s", dims, precision) font "sans,15"
             plot curve("native", dims, precision, "gravity_damping", "textbook") using 1:2 with linespoints ls 1 title "textbook path (motus\\_particle\\_*, N = 5000)", \
+                 curve("native", dims, precision, "gravity_damping", "textbook_hand") using 1:2 with points ls 14 title "the same calls written by hand, no checks (N = 5000)", \
                  curve("native", dims, precision, "gravity_damping", "general") using 1:2 with linespoints ls 4 title "motus + walls nobody reaches (kernel for any scene)", \
                  curve("native", dims, precision, "gravity", "odeint_symplectic_euler") using 1:2 with linespoints ls 6 title "odeint symplectic\\_euler (gravity)", \
                  curve("native", dims, precision, "gravity", "odeint_velocity_verlet") using 1:2 with linespoints ls 7 title "odeint velocity\\_verlet (gravity)", \
@@ -61,6 +64,7 @@ if (has_native) {
         }
     }
     unset multiplot
+    set autoscale y
 
     # ---- 2: every scene, float, native build: solid 2D, dashed 3D ------------------------------------
     set terminal pngcairo size 3000,1400 enhanced font "sans,13" linewidth 1.2
@@ -90,9 +94,11 @@ if (has_o2) {
     set terminal pngcairo size 2000,800 enhanced font "sans,13" linewidth 1.2
     set output out."/throughput_o2.png"
     set multiplot layout 1,2 title "gravity + damping at -O2 (no -march): motus\\_step against what gcc makes of plain loops\n".machine_o2 font "sans,16"
+    set yrange [0.1:100] # room for the legend above the textbook point
     do for [dims=2:3] {
         set title sprintf("%dD float", dims) font "sans,15"
         plot curve("o2", dims, "float", "gravity_damping", "textbook") using 1:2 with linespoints ls 1 title "textbook path (motus\\_particle\\_*, N = 5000), -O2", \
+             curve("o2", dims, "float", "gravity_damping", "textbook_hand") using 1:2 with points ls 14 title "the same calls written by hand, no checks, -O2", \
              curve("o2", dims, "float", "gravity_damping", "general") using 1:2 with linespoints ls 4 title "motus + walls nobody reaches, -O2", \
              curve("o2", dims, "float", "gravity_damping", "hand") using 1:2 with linespoints ls 2 title "hand-written loop, -O2", \
              curve("o2", dims, "float", "gravity_damping", "motus") using 1:2 with linespoints ls 3 title "motus, -O2", \
@@ -100,4 +106,5 @@ if (has_o2) {
              curve("o2", dims, "float", "memory", "rmw") using 1:2 with lines ls 10 title "bound, -O2"
     }
     unset multiplot
+    set autoscale y
 }

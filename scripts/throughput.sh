@@ -17,8 +17,10 @@
 #   throughput.png, throughput_scenes.png, throughput_o2.png
 # and copies the figures to docs/throughput*.png for the README. About 10 minutes on 2 cores; run it on an
 # otherwise idle machine (the report says how busy it was: other processes slow the 2-thread runs most).
-# Options go to both programs: --quick (a smoke run in seconds; its figures are not copied to docs/),
-# --sizes N,N,... , --rounds R (9), --seconds S (0.001 per measurement).
+# Options go to both programs: --quick (a smoke run in seconds), --sizes N,N,... , --scenes S,S,...,
+# --dims 2|3, --precision float|double (a run with any of these leaves docs/ as it was), --rounds R (9),
+# --seconds S (0.001 per measurement). CC=clang CXX=clang++ THROUGHPUT_BUILD_DIR=build-clang measures a
+# Clang build (--sizes 5000: only the textbook calls).
 # THROUGHPUT_BUILD_DIR and THROUGHPUT_OUT override the two directories. OpenMP's idle threads spin for at
 # most GOMP_SPINCOUNT=10000 turns (set it to override): libgomp's default keeps a core busy for milliseconds
 # after each 2-thread step, which slows whatever is measured next on a 2-core machine.
@@ -53,15 +55,21 @@ done
 reporter=$build/bench/throughput_native
 [ -x "$reporter" ] || reporter=$build/bench/throughput_o2
 "$reporter" --report "$out" </dev/null
-gnuplot -e "out='$out'" bench/plot_throughput.gp </dev/null
-
-quick=0
-for argument in "$@"; do [ "$argument" = "--quick" ] && quick=1; done
-if [ "$quick" -eq 0 ]; then
+# Only a full run (no --quick, nor a choice of sizes, scenes, dimensions or precision) redraws docs/; the
+# figures of a run without some of the data they draw are not drawn.
+partial=0
+for argument in "$@"; do
+    case $argument in --quick | --sizes* | --scenes* | --dims* | --precision*) partial=1 ;; esac
+done
+if ! gnuplot -e "out='$out'" bench/plot_throughput.gp </dev/null 2>"$out/gnuplot.log"; then
+    [ "$partial" -eq 1 ] || { cat "$out/gnuplot.log" >&2; exit 1; }
+    echo "throughput: no figures for this partial run (see $out/gnuplot.log)" >&2
+fi
+if [ "$partial" -eq 0 ]; then
     for figure in throughput throughput_scenes throughput_o2; do
         if [ -f "$out/$figure.png" ]; then cp "$out/$figure.png" "docs/$figure.png"; fi
     done
     echo "throughput: results in $out; figures copied to docs/throughput{,_scenes,_o2}.png" >&2
 else
-    echo "throughput: results in $out (quick run: docs/ left as it was)" >&2
+    echo "throughput: results in $out (a partial run: docs/ left as it was)" >&2
 fi
