@@ -970,22 +970,19 @@ MOTUS__RARE motus_result motus__particle_add_force_rare(motus_particle *particle
 }
 MOTUS__RARE motus_result motus__particle_step_rare(motus_particle *particle, motus_real dt) {
     motus_particle3 p = motus__particle3_of(particle);
-    motus_result result = motus__step(&p.position, &p.velocity, p.force, p.inverse_mass, dt, 2);
+    motus_result result = motus__particle3_step_rare(&p, dt);
     if (dt == 0) return result; /* a step of nothing writes nothing */
     return motus__particle_store(particle, &p, result);
 }
 MOTUS__RARE motus_result motus__particle_damp_rare(motus_particle *particle, motus_real damping) {
     motus_particle3 p = motus__particle3_of(particle);
-    motus_result result = MOTUS_ERROR_INVALID_DAMPING;
-    if (motus__fraction_valid(damping)) result = motus__damp3(&p.velocity, p.inverse_mass, MOTUS_R(1.0) - damping, 2);
-    return motus__particle_store(particle, &p, result);
+    return motus__particle_store(particle, &p, motus__particle3_damp_rare(&p, damping));
 }
 MOTUS__RARE motus_result motus__particle_bounce_rare(motus_particle *particle, motus_real min_x, motus_real min_y,
                                                      motus_real max_x, motus_real max_y, motus_real restitution) {
     motus_particle3 p = motus__particle3_of(particle);
     return motus__particle_store(particle, &p,
-                                 motus__bounce(&p.position, &p.velocity, motus_v3(min_x, min_y, 0),
-                                               motus_v3(max_x, max_y, 0), restitution, 2));
+                                 motus__particle3_bounce_rare(&p, min_x, min_y, 0, max_x, max_y, 0, restitution));
 }
 
 /* ---- the 2D particle functions ---- */
