@@ -70,6 +70,7 @@ struct options {
     std::vector<int> dims = {2, 3};
     double cap = 2.0, run_cap = 40.0, run_limit = 150.0;
     int substeps = 4; // motus's and the brute-force loop's substeps a frame (the peers take one step a frame)
+    int iterations = 0; // motus's and the brute-force loop's solver sweeps a substep (0: motus's default, 4)
 };
 
 struct frames {
@@ -97,7 +98,7 @@ uint64_t splitmix(uint64_t &s) {
 }
 double uniform(uint64_t &s, double lo, double hi) { return lo + (hi - lo) * (double)(splitmix(s) >> 11) / 9007199254740992.0; }
 
-void make_start(start &st, int dims, const std::string &scene, int n, int substeps) {
+void make_start(start &st, int dims, const std::string &scene, int n, int substeps, int iterations) {
     const double r = 0.5;
     cb_scene &s = st.scene;
     s = cb_scene{};
@@ -107,7 +108,7 @@ void make_start(start &st, int dims, const std::string &scene, int n, int subste
     s.g = 9.81;
     s.dt = 1.0 / 60;
     s.substeps = substeps;
-    s.iterations = 0;
+    s.iterations = iterations;
     const int k = dims == 2 ? (int)std::ceil(std::sqrt(2.0 * n)) : (int)std::ceil(std::cbrt(2.0 * n));
     const double side = 2 * r * k;
     s.box_min[0] = s.box_min[1] = s.box_min[2] = 0;
@@ -791,6 +792,7 @@ int main(int argc, char **argv) {
         }
         else if (a == "--cap" && has_value) o.cap = std::atof(argv[++i]);
         else if (a == "--substeps" && has_value) o.substeps = std::atoi(argv[++i]);
+        else if (a == "--iterations" && has_value) o.iterations = std::atoi(argv[++i]);
         else if (a == "--run-cap" && has_value) o.run_cap = std::atof(argv[++i]);
         else if (a == "--run-limit" && has_value) o.run_limit = std::atof(argv[++i]);
         else return usage();
@@ -849,7 +851,7 @@ int main(int argc, char **argv) {
             for (int n : o.sizes) {
                 const char *scene = scene_name.c_str();
                 start st;
-                make_start(st, dims, scene, n, o.substeps);
+                make_start(st, dims, scene, n, o.substeps, o.iterations);
                 for (const cb_engine *e : engines) {
                     if (!(e->dims_mask & (1 << dims))) continue;
                     const row *smaller = nullptr;

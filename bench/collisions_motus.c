@@ -59,7 +59,7 @@ static void *motus_world_create(const cb_scene *s) {
     scene->contacts.radius = (motus_real)s->r;
     scene->contacts.restitution = 0;
     scene->contacts.friction = 0;
-    scene->contacts.iterations = 0; /* the default (4) */
+    scene->contacts.iterations = s->iterations > 0 ? s->iterations : 0; /* 0: the default (4) */
     motus_state *state = &w->state;
     state->dimensions = s->dims;
     state->count = s->n;
