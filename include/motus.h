@@ -2964,7 +2964,15 @@ typedef struct motus__contact_job {
        above the largest real / 64: there an approach speed, or an impulse of (1 + e) times it, would
        overflow where the velocities after it do not); h and the threshold are scaled to match */
     motus_real velocity_scale;
-    int task_cells[MOTUS__TASKS][2], task_near[MOTUS__TASKS];
+    int task_cells[MOTUS__TASKS][2][3], task_near[MOTUS__TASKS]; /* per task: the lowest and highest cells */
+    /* The table over a dense grid, where the cells the particles span (and one more each side) are no more
+       than its buckets: bucket = sum over d of (cell[d] - dense_low[d]) * dense_stride[d], the first axis
+       of the half neighbourhood fastest, so that its cells come as runs of neighbouring buckets (2 runs in
+       2D and 5 in 3D, where the hash looks up 5 and 14 buckets) and no bucket holds two cells. The cells are
+       visited in the same order either way: the same pairs, in the same order. */
+    int dense, dense_low[3], run_count;
+    ptrdiff_t dense_stride[3], run_start[14];
+    int run_length[14];
     motus_real largest_radius;
     uint32_t *height_key; /* per particle, its height as a key (motus__height_key), in the sort bins */
     double height_scale;  /* keys per metre of height: 64 / the largest radius */
@@ -2995,6 +3003,13 @@ static unsigned motus__cell_hash(int x, int y, int z, unsigned mask) {
     h *= 0x7feb352du;
     h ^= h >> 15;
     return h & mask;
+}
+/* The bucket of a cell: on the dense grid or hashed (see dense in motus__contact_job). */
+static unsigned motus__bucket(const motus__contact_job *j, int x, int y, int z) {
+    if (j->dense)
+        return (unsigned)((x - j->dense_low[0]) * j->dense_stride[0] + (y - j->dense_low[1]) * j->dense_stride[1] +
+                          (z - j->dense_low[2]) * j->dense_stride[2]);
+    return motus__cell_hash(x, y, z, j->mask);
 }
 /* The cell number of coordinate x: floor(x / cell), formed in double (in float too: a cell number up to
    2^29 then has an ulp of 2^-23 cell, so touching particles, less than 2.2/2.25 of a cell apart, never
@@ -3055,7 +3070,8 @@ static void motus__cells_task(void *context, int first, int count) {
     motus__contact_job *j = (motus__contact_job *)context;
     int t, i, d, from, to;
     for (t = first; t < first + count; ++t) {
-        int near_walls = 0, cell_low = INT_MAX, cell_high = INT_MIN, *near_wall;
+        int near_walls = 0, cell_low[3] = {INT_MAX, INT_MAX, INT_MAX}, cell_high[3] = {INT_MIN, INT_MIN, INT_MIN};
+        int *near_wall;
         motus__task_range(j, t, &from, &to);
         near_wall = j->near_wall + from;
         for (i = from; j->walls && i < to; ++i) {
@@ -3074,10 +3090,22 @@ static void motus__cells_task(void *context, int first, int count) {
                 k[d] = j->cell[d][i] = motus__cell_of(j->x[d][(ptrdiff_t)i * j->stride], j->inverse_cell);
             j->rank[i] = (int)motus__cell_hash(k[0], k[1], k[2], j->mask); /* the bucket, for now */
             j->height_key[i] = motus__height_key(j, j->up_sign * j->x[j->up_axis][(ptrdiff_t)i * j->stride]);
-            if (k[j->slab_axis] < cell_low) cell_low = k[j->slab_axis];
-            if (k[j->slab_axis] > cell_high) cell_high = k[j->slab_axis];
+            for (d = 0; d < 3; ++d) {
+                if (k[d] < cell_low[d]) cell_low[d] = k[d];
+                if (k[d] > cell_high[d]) cell_high[d] = k[d];
+            }
         }
-        j->task_cells[t][0] = cell_low, j->task_cells[t][1] = cell_high;
+        for (d = 0; d < 3; ++d) j->task_cells[t][0][d] = cell_low[d], j->task_cells[t][1][d] = cell_high[d];
+    }
+}
+/* Each particle's bucket on the dense grid (in rank, for now). */
+static void motus__dense_task(void *context, int first, int count) {
+    motus__contact_job *j = (motus__contact_job *)context;
+    int t, i, from, to;
+    for (t = first; t < first + count; ++t) {
+        motus__task_range(j, t, &from, &to);
+        for (i = from; i < to; ++i)
+            j->rank[i] = (int)motus__bucket(j, j->cell[0][i], j->cell[1][i], j->dims == 3 ? j->cell[2][i] : 0);
     }
 }
 static void motus__slabs_task(void *context, int first, int count) {
@@ -3245,6 +3273,29 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
         for (i = 0; i < count; ++i) j->order[i] = j->rank[i] = i; /* index order */
         return;
     }
+    {
+        /* the dense grid where it fits in the table: the cells spanned, one more each side (the neighbours
+           of the outermost), the first axis of the half neighbourhood fastest (see motus__contact_job) */
+        const int axis = j->up_axis, first = axis == 0 ? 1 : 0, second = 3 - axis - first;
+        const int by[3] = {first, second, axis};
+        double cells = 1;
+        int low[3], high[3], k;
+        for (d = 0; d < 3; ++d) {
+            low[d] = j->task_cells[0][0][d], high[d] = j->task_cells[0][1][d];
+            for (t = 1; t < j->tasks; ++t) {
+                if (j->task_cells[t][0][d] < low[d]) low[d] = j->task_cells[t][0][d];
+                if (j->task_cells[t][1][d] > high[d]) high[d] = j->task_cells[t][1][d];
+            }
+        }
+        for (k = 0; k < 3; ++k) {
+            d = by[k];
+            j->dense_stride[d] = (ptrdiff_t)cells;
+            j->dense_low[d] = d < dims ? low[d] - 1 : 0; /* cell numbers: within +-2^29 */
+            cells *= d < dims ? (double)high[d] - (double)low[d] + 3 : 1;
+        }
+        j->dense = cells <= (double)l->table_size;
+        if (j->dense) motus__for(scene, motus__dense_task, j, j->tasks);
+    }
     /* the particles counting-sorted by bucket, in index order within one; table[b] runs one bucket ahead
        in the scatter, and is shifted back after */
     for (i = 0; i <= (int)l->table_size; ++i) j->table[i] = 0;
@@ -3257,7 +3308,7 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
        contacts then come before the rows they carry, so one sweep carries a push up the whole pile. */
     {
         const int axis = j->up_axis, first = axis == 0 ? 1 : 0, second = 3 - axis - first;
-        int o[3], *slab_extent = j->task_cells[0];
+        int o[3], slab_extent[2], k;
         j->half_count = 0;
         for (o[axis] = 0; o[axis] <= 1; ++o[axis])
             for (o[second] = dims == 3 ? -1 : 0; o[second] <= (dims == 3 ? 1 : 0); ++o[second])
@@ -3266,9 +3317,21 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
                     j->half[j->half_count][0] = o[0], j->half[j->half_count][1] = o[1];
                     j->half[j->half_count][2] = o[2], ++j->half_count;
                 }
-        for (t = 0; t < j->tasks; ++t) {
-            if (j->task_cells[t][0] < slab_extent[0]) slab_extent[0] = j->task_cells[t][0];
-            if (j->task_cells[t][1] > slab_extent[1]) slab_extent[1] = j->task_cells[t][1];
+        /* on the dense grid, the half neighbourhood as runs of neighbouring buckets */
+        j->run_count = 0;
+        for (k = 0; j->dense && k < j->half_count; ++k) {
+            const ptrdiff_t at = j->half[k][0] * j->dense_stride[0] + j->half[k][1] * j->dense_stride[1] +
+                                 j->half[k][2] * j->dense_stride[2];
+            if (j->run_count > 0 && j->run_start[j->run_count - 1] + j->run_length[j->run_count - 1] == at) {
+                ++j->run_length[j->run_count - 1];
+            } else {
+                j->run_start[j->run_count] = at, j->run_length[j->run_count] = 1, ++j->run_count;
+            }
+        }
+        slab_extent[0] = j->task_cells[0][0][j->slab_axis], slab_extent[1] = j->task_cells[0][1][j->slab_axis];
+        for (t = 1; t < j->tasks; ++t) {
+            if (j->task_cells[t][0][j->slab_axis] < slab_extent[0]) slab_extent[0] = j->task_cells[t][0][j->slab_axis];
+            if (j->task_cells[t][1][j->slab_axis] > slab_extent[1]) slab_extent[1] = j->task_cells[t][1][j->slab_axis];
         }
         /* The slabs: across the first axis that is not up, so that a pile's columns stay in one slab; as
            many as are at least MOTUS__SLAB_CELLS_2D (3D) cells wide, at most MOTUS__SLABS, rounded down to a
@@ -3327,9 +3390,11 @@ static int motus__pair_task(const motus__contact_job *j, int upper) {
 }
 
 /* Are a and b nearer than `reach` times the sum of their radii (1: overlapping)? If so, the unit normal from
-   a to b and the depth (m; negative: the gap between them). Coincident centres get the normal +x. */
-MOTUS__KI int motus__overlap_in(const motus__contact_job *j, int dims, int a, int b, motus_real reach, motus_real *normal,
-                                motus_real *depth) {
+   a to b and the depth (m; negative: the gap between them). Coincident centres get the normal +x. With
+   `overlapping`, only a pair that overlaps (depth > 0) is one: the projection's test, before the normal's
+   divisions, which it then spares the pairs it leaves alone (5% of a drop's step at 1 substep). */
+MOTUS__KI int motus__overlap_in(const motus__contact_job *j, int dims, int a, int b, motus_real reach, int overlapping,
+                                motus_real *normal, motus_real *depth) {
     const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
     const motus_real sum = (motus__contact_r(j, a) + motus__contact_r(j, b)) * j->scale, near = sum * reach;
     motus_real u[3] = {0, 0, 0}, d2 = 0, distance;
@@ -3340,13 +3405,10 @@ MOTUS__KI int motus__overlap_in(const motus__contact_job *j, int dims, int a, in
     }
     if (!(d2 < near * near)) return 0;
     distance = MOTUS_SQRT(d2);
-    for (d = 0; d < dims; ++d) normal[d] = distance > 0 ? u[d] / distance : (motus_real)(d == 0);
     *depth = (sum - distance) * j->inverse_scale;
+    if (overlapping && !(*depth > 0)) return 0;
+    for (d = 0; d < dims; ++d) normal[d] = distance > 0 ? u[d] / distance : (motus_real)(d == 0);
     return 1;
-}
-static int motus__overlap(const motus__contact_job *j, int a, int b, motus_real reach, motus_real *normal,
-                          motus_real *depth) {
-    return motus__overlap_in(j, j->dims, a, b, reach, normal, depth);
 }
 
 /* |t| from t2 = t.t, or, where t2 overflowed, from t over its largest component (a sliding speed of 1e19
@@ -3418,9 +3480,6 @@ MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int 
     fast = vn < -j->threshold && !j->shock;
     if (fast ? !(gap <= 0) : (gap > (j->shock ? MOTUS__TOUCH_SUPPORT : MOTUS__TOUCH) * sum && !(gap <= -vn * j->h)))
         return;
-    /* In the support sweep a gap within motus__support_slop is a contact (no approach allowed); larger gaps
-       close as in the other sweeps. */
-    allowed = gap > 0 && (!j->shock || gap > motus__support_slop(j, a, b, sum)) ? -gap / j->h : 0;
     if (j->shock) {
         /* the last sweep: a particle resting on a support (a wall, an immovable particle, or a particle that
            rests on one) within 60 degrees of up is a support for the one above it (a neighbour in the same
@@ -3437,6 +3496,9 @@ MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int 
         for (d = 0; d < dims; ++d) support += j->v[d][pa] * n[d];
         vn += support; /* vn as against a still support */
     }
+    /* In the support sweep a gap within motus__support_slop is a contact (no approach allowed); larger gaps
+       close as in the other sweeps. (After the support test: most pairs of a support sweep end there.) */
+    allowed = gap > 0 && (!j->shock || gap > motus__support_slop(j, a, b, sum)) ? -gap / j->h : 0;
     target = fast ? -j->restitution * vn : allowed;
     if (accumulated && *accumulated >= 0 && !fast) {
         /* A resting contact keeps the impulse it has had in this pass, and its total is clamped at 0, not
@@ -3581,32 +3643,34 @@ MOTUS__KI void motus__pair_solve_in(motus__contact_job *j, int dims, int a, int 
         motus__pair_position(j, dims, a, b, n, depth);
     }
 }
-static void motus__pair_solve(motus__contact_job *j, int a, int b, int phase, const motus_real *n, motus_real depth) {
-    motus__pair_solve_in(j, j->dims, a, b, phase, n, depth, NULL);
-}
 
 /* Particle i's contacts in its half of the neighbourhood: its own cell's particles after it (index order),
    and the cells after its own in (up, then the other axes) order: 4 cells of 8 in 2D, 13 of 26 in 3D, so
-   that each pair is met once, from one of its two particles. The pair is given lower particle first (in
-   the solver's order), with the normal from it to the other. Records them (up to room) or solves them;
-   returns how many there were. */
-static size_t motus__pairs_of(motus__contact_job *j, int i, int action, motus_real reach, motus_contact_pair *out,
-                              motus_real *geometry_out, size_t room) {
-    const int c0 = j->cell[0][i], c1 = j->cell[1][i], c2 = j->dims == 3 ? j->cell[2][i] : 0;
+   that each pair is met once, from one of its two particles. On the dense grid these cells are runs of
+   neighbouring buckets (the first starts with the own cell); hashed, one bucket each, which may hold other
+   cells too (and be some other neighbour's bucket as well): only that cell's particles. Either way the
+   same cells in the same order, each cell's particles in index order. The pair is given lower particle
+   first (in the solver's order), with the normal from it to the other. Records them (up to room) or solves
+   them; returns how many there were. dims a constant (motus__pairs_of_2, _3). */
+MOTUS__KI size_t motus__pairs_of_in(motus__contact_job *j, int dims, int i, int action, motus_real reach,
+                                    motus_contact_pair *out, motus_real *geometry_out, size_t room) {
+    const int c0 = j->cell[0][i], c1 = j->cell[1][i], c2 = dims == 3 ? j->cell[2][i] : 0;
+    const int runs = j->dense ? j->run_count : j->half_count;
+    const ptrdiff_t own = j->dense ? (ptrdiff_t)motus__bucket(j, c0, c1, c2) : 0;
     int cell;
     size_t found = 0;
-    motus_real n[3], depth;
-    for (cell = 0; cell < j->half_count; ++cell) {
+    for (cell = 0; cell < runs; ++cell) {
         const int t0 = c0 + j->half[cell][0], t1 = c1 + j->half[cell][1], t2 = c2 + j->half[cell][2];
-        const unsigned b = motus__cell_hash(t0, t1, t2, j->mask);
+        const ptrdiff_t b = j->dense ? own + j->run_start[cell] : (ptrdiff_t)motus__cell_hash(t0, t1, t2, j->mask);
+        const int own_end = cell > 0 ? 0 : j->table[b + 1]; /* the own cell's particles end here */
         int other, end;
-        /* a bucket may hold other cells too (and be some other neighbour's bucket as well): only this
-           cell's particles, so each is met once; in its own cell, the particles after it */
-        for (other = j->table[b], end = j->table[b + 1]; other < end; ++other) {
+        for (other = j->table[b], end = j->table[b + (j->dense ? j->run_length[cell] : 1)]; other < end; ++other) {
             const int q = j->sorted[other];
+            motus_real n[3] = {0, 0, 0}, depth;
             int lower, upper, d;
-            if ((cell == 0 && q <= i) || j->cell[0][q] != t0 || j->cell[1][q] != t1 ||
-                (j->dims == 3 && j->cell[2][q] != t2) || !motus__overlap(j, i, q, reach, n, &depth))
+            if ((other < own_end && q <= i) ||
+                (!j->dense && (j->cell[0][q] != t0 || j->cell[1][q] != t1 || (dims == 3 && j->cell[2][q] != t2))) ||
+                !motus__overlap_in(j, dims, i, q, reach, 0, n, &depth))
                 continue;
             lower = i, upper = q;
             if (j->rank[q] < j->rank[i]) {
@@ -3618,16 +3682,29 @@ static size_t motus__pairs_of(motus__contact_job *j, int i, int action, motus_re
                     out[found].a = lower, out[found].b = upper;
                     if (geometry_out) {
                         motus_real *g = geometry_out + 4 * found;
-                        g[0] = n[0], g[1] = n[1], g[2] = j->dims == 3 ? n[2] : 0, g[3] = depth;
+                        g[0] = n[0], g[1] = n[1], g[2] = dims == 3 ? n[2] : 0, g[3] = depth;
                     }
                 }
             } else {
-                motus__pair_solve(j, lower, upper, action, n, depth);
+                motus__pair_solve_in(j, dims, lower, upper, action, n, depth, NULL);
             }
             ++found;
         }
     }
     return found;
+}
+static MOTUS__NOINLINE size_t motus__pairs_of_2(motus__contact_job *j, int i, int action, motus_real reach,
+                                                motus_contact_pair *out, motus_real *geometry_out, size_t room) {
+    return motus__pairs_of_in(j, 2, i, action, reach, out, geometry_out, room);
+}
+static MOTUS__NOINLINE size_t motus__pairs_of_3(motus__contact_job *j, int i, int action, motus_real reach,
+                                                motus_contact_pair *out, motus_real *geometry_out, size_t room) {
+    return motus__pairs_of_in(j, 3, i, action, reach, out, geometry_out, room);
+}
+static size_t motus__pairs_of(motus__contact_job *j, int i, int action, motus_real reach, motus_contact_pair *out,
+                              motus_real *geometry_out, size_t room) {
+    return j->dims == 3 ? motus__pairs_of_3(j, i, action, reach, out, geometry_out, room)
+                        : motus__pairs_of_2(j, i, action, reach, out, geometry_out, room);
 }
 
 /* The list sorted for the sweeps: by slab task (the even slabs' tasks first), then by the rank of the
@@ -3731,7 +3808,7 @@ MOTUS__KI void motus__sweep_listed(motus__contact_job *j, int phase, int dims, s
                     n[0] = g[0], n[1] = g[1], n[2] = g[2];
                     motus__pair_solve_in(j, dims, a, b, phase, n, g[3],
                                          group ? &accumulated[m - k] : j->shock ? NULL : j->impulse + m);
-                } else if (motus__overlap_in(j, dims, a, b, MOTUS__REACH, n, &depth)) {
+                } else if (motus__overlap_in(j, dims, a, b, MOTUS__REACH, 1, n, &depth)) {
                     motus__pair_solve_in(j, dims, a, b, phase, n, depth, NULL);
                 }
             }

@@ -290,6 +290,44 @@ TEST(broadphase_equals_brute_force) {
         }
 }
 
+/* Two tables, one search: where the cells the particles span fit in the table, the header lays the cells
+   out densely (a few runs of neighbouring buckets); one particle far away spreads them too wide and they are
+   hashed. Both must list the same pairs in the same order: the cluster's pairs with one of its particles
+   moved 10^6 m away along x (hashed) are its pairs without that particle's (dense), in order; and each
+   list is the brute-force one. */
+TEST(broadphase_dense_and_hashed_list_the_same_pairs) {
+    static motus_contact_pair dense[16 * CAPACITY], hashed[16 * CAPACITY];
+    int dims, mixed;
+    random_state = 23;
+    for (dims = 2; dims <= 3; ++dims)
+        for (mixed = 0; mixed <= 1; ++mixed) {
+            const int n = 1200, moved = 517;
+            int i, d, found_dense = -1, found_hashed = -1, kept = 0;
+            world_init(dims, n, MOTUS_R(0.5));
+            for (i = 0; i < n; ++i) {
+                for (d = 0; d < dims; ++d) W.x[d][i] = random_real(-9, dims == 2 ? 25 : 6);
+                W.radius[i] = random_real(0.05, 1.0);
+            }
+            if (mixed) W.state.radius = W.radius;
+            check_broadphase(mixed ? "dense, mixed radii" : "dense");
+            ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, sizeof W.scratch, dense, 16 * CAPACITY,
+                                              &found_dense),
+                          MOTUS_OK);
+            W.x[0][moved] = MOTUS_R(1e6);
+            check_broadphase(mixed ? "hashed, mixed radii" : "hashed");
+            ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, sizeof W.scratch, hashed, 16 * CAPACITY,
+                                              &found_hashed),
+                          MOTUS_OK);
+            ENSURE(found_dense > n / 2 && found_hashed < found_dense);
+            for (i = 0; i < found_dense && i < 16 * CAPACITY; ++i) {
+                if (dense[i].a == moved || dense[i].b == moved) continue;
+                ENSURE(kept < found_hashed && hashed[kept].a == dense[i].a && hashed[kept].b == dense[i].b);
+                ++kept;
+            }
+            ENSURE_EQ_INT(kept, found_hashed);
+        }
+}
+
 /* A ball dropped on the floor with restitution 0.5 comes to rest on it at floor + r: no hop. */
 TEST(ball_rests_on_the_floor) {
     int dims;
@@ -792,6 +830,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(momentum_kept_and_energy_never_grows),
     TEST_CASE(newtons_cradle),
     TEST_CASE(broadphase_equals_brute_force),
+    TEST_CASE(broadphase_dense_and_hashed_list_the_same_pairs),
     TEST_CASE(ball_rests_on_the_floor),
     TEST_CASE(stack_of_ten_rests),
     TEST_CASE(ball_in_a_v_is_not_thrown_off),
