@@ -576,7 +576,10 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      formed in double, so that rounding never skips a cell, and clamped at 2^29, where the particles beyond
      share the edge cells; one particle flung far away costs nothing), the particles counting-sorted by
      bucket into scratch (O(N), no allocation); each particle looks at its own cell and the half of the
-     3^d - 1 around it that come after it (each pair is met once). The pairs nearer than 1.1 times the sum
+     3^d - 1 around it that come after it (each pair is met once). Where the cells the particles span fit
+     in the table (2 buckets a particle), the buckets are those cells laid out densely, so that the cells a
+     particle looks at are 2 runs of neighbouring buckets in 2D (5 in 3D) instead of 5 (14) hashed
+     lookups; the same cells in the same order either way, so the same pairs and bits. The pairs nearer than 1.1 times the sum
      of their radii are listed in scratch (4 per particle in 2D, 8 in 3D; past that, the rest are searched
      again at each sweep, same order). The solver's order is the heights' (an exact radix sort), so
      a particle far above or below a pile changes nothing in it.
