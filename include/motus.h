@@ -3467,7 +3467,7 @@ static int motus__solved_later(const motus__contact_job *j, int a, int b) {
    the momentum through in one sweep. Equal and opposite: momentum is kept to rounding; with e <= 1 the
    kinetic energy does not grow. */
 MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int b, const motus_real *n, motus_real depth,
-                                    motus_real *accumulated) {
+                                    motus_real *accumulated, int *moved) {
     const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
     const motus_real wb = motus__contact_w(j, b), gap = -depth;
     const motus_real sum = motus__contact_r(j, a) + motus__contact_r(j, b);
@@ -3515,6 +3515,7 @@ MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int 
         if (impulse < 0) impulse = vn > 0 ? -vn / w : 0;
         if (*accumulated + impulse < 0) impulse = -*accumulated;
         *accumulated += impulse;
+        *moved = 1;
         if (impulse == 0) return;
     } else {
         if (!(vn < allowed)) return; /* separating, or resting */
@@ -3522,6 +3523,7 @@ MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int 
         /* a collision's bounce is never taken back: the pair takes only increments from now on */
         if (accumulated && fast) *accumulated = -1;
     }
+    *moved = 1;
     for (d = 0; d < dims; ++d) {
         j->v[d][pa] -= impulse * wa * n[d];
         j->v[d][pb] += impulse * wb * n[d];
@@ -3548,13 +3550,15 @@ MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int 
    sweep only a particle on its support (within 60 degrees of up) moves, and straight up, by depth / n.up
    (at most twice the depth): pushed along the normal instead, a ball against a side wall is pushed into it
    and the sideways errors grow from row to row up the wall (a 10^5-ball frictionless 2D pile blew up). */
-MOTUS__KI void motus__pair_position(motus__contact_job *j, int dims, int a, int b, const motus_real *n, motus_real depth) {
+MOTUS__KI void motus__pair_position(motus__contact_job *j, int dims, int a, int b, const motus_real *n, motus_real depth,
+                                    int *moved) {
     const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
     /* the support sweep: only where b rests on a (the pairs side by side were dealt with by the sweeps before) */
     const int carried = j->shock && n[j->up_axis] * j->up_sign > MOTUS_R(0.5);
     const motus_real wb = motus__contact_w(j, b), wa = carried && wb > 0 ? 0 : motus__contact_w(j, a), w = wa + wb;
     int d;
     if (w == 0 || (j->shock && !carried)) return;
+    *moved = 1;
     if (carried && wb > 0) {
         j->x[j->up_axis][pb] += j->up_sign * depth / (n[j->up_axis] * j->up_sign);
         return;
@@ -3587,19 +3591,19 @@ MOTUS__KI void motus__pair_position(motus__contact_job *j, int dims, int a, int 
 }
 /* The walls of the bounds as contacts at the particle's radius: the same impulse, threshold and friction
    as between particles (the wall immovable), and the same projection. Walls act on immovable particles
-   too, as the bounds do without contacts. */
-static void motus__wall_contacts(motus__contact_job *j, int i, int action) {
+   too, as the bounds do without contacts. Returns whether it moved the particle (or may have). */
+static int motus__wall_contacts(motus__contact_job *j, int i, int action) {
     const ptrdiff_t p = (ptrdiff_t)i * j->stride;
     const motus_real r = motus__contact_r(j, i);
-    int d, e;
+    int d, e, moved = 0;
     for (d = 0; d < j->dims; ++d) {
         motus_real *x = &j->x[d][p], *v = &j->v[d][p], low = j->lo[d] + r, high = j->hi[d] - r;
         if (!(low <= (motus_real)MOTUS__REAL_MAX)) low = (motus_real)MOTUS__REAL_MAX;
         if (!(high >= -(motus_real)MOTUS__REAL_MAX)) high = -(motus_real)MOTUS__REAL_MAX;
         if (low > high) low = high = j->lo[d] * MOTUS_R(0.5) + j->hi[d] * MOTUS_R(0.5); /* narrower than the ball */
         if (action == MOTUS__PAIRS_POSITION) {
-            if (*x < low) *x = low;
-            if (*x > high) *x = high;
+            if (*x < low) *x = low, moved = 1;
+            if (*x > high) *x = high, moved = 1;
             continue;
         }
         for (e = -1; e <= 1; e += 2) {
@@ -3615,6 +3619,7 @@ static void motus__wall_contacts(motus__contact_job *j, int i, int action) {
             target = vn < -j->threshold ? -j->wall_restitution * vn : 0;
             change = target - vn;
             *v = e < 0 ? target : -target;
+            moved = 1;
             if (j->friction == 0) continue;
             for (k = 0; k < j->dims; ++k)
                 if (k != d) t[k] = j->v[k][p], t2 += t[k] * t[k];
@@ -3625,6 +3630,7 @@ static void motus__wall_contacts(motus__contact_job *j, int i, int action) {
                 if (k != d) j->v[k][p] *= keep;
         }
     }
+    return moved;
 }
 
 /* Does particle i touch (or pass) a wall of the bounds? */
@@ -3639,11 +3645,11 @@ static int motus__against_wall(const motus__contact_job *j, int i) {
 /* A near pair in a phase: impulses where they touch or will (see motus__pair_velocity), projection where
    they overlap. */
 MOTUS__KI void motus__pair_solve_in(motus__contact_job *j, int dims, int a, int b, int phase, const motus_real *n,
-                                    motus_real depth, motus_real *accumulated) {
+                                    motus_real depth, motus_real *accumulated, int *moved) {
     if (phase == MOTUS__PAIRS_VELOCITY) {
-        motus__pair_velocity(j, dims, a, b, n, depth, accumulated);
+        motus__pair_velocity(j, dims, a, b, n, depth, accumulated, moved);
     } else if (depth > 0) {
-        motus__pair_position(j, dims, a, b, n, depth);
+        motus__pair_position(j, dims, a, b, n, depth, moved);
     }
 }
 
@@ -3689,7 +3695,8 @@ MOTUS__KI size_t motus__pairs_of_in(motus__contact_job *j, int dims, int i, int 
                     }
                 }
             } else {
-                motus__pair_solve_in(j, dims, lower, upper, action, n, depth, NULL);
+                int moved = 0;
+                motus__pair_solve_in(j, dims, lower, upper, action, n, depth, NULL, &moved);
             }
             ++found;
         }
@@ -3802,6 +3809,7 @@ MOTUS__KI void motus__sweep_listed(motus__contact_job *j, int phase, int dims, s
         group = several && end - k <= MOTUS__SUPPORT_GROUP;
         for (m = 0; group && m < end - k; ++m) accumulated[m] = 0;
         for (local = 0; local < (several ? MOTUS__SUPPORT_PASSES : 1); ++local) {
+            int moved = 0;
             for (m = k; m < end; ++m) {
                 motus_real n[3], depth;
                 const int a = j->pairs[m].a, b = j->pairs[m].b;
@@ -3810,12 +3818,15 @@ MOTUS__KI void motus__sweep_listed(motus__contact_job *j, int phase, int dims, s
                     const motus_real *g = j->geometry + 4 * m;
                     n[0] = g[0], n[1] = g[1], n[2] = g[2];
                     motus__pair_solve_in(j, dims, a, b, phase, n, g[3],
-                                         group ? &accumulated[m - k] : j->shock ? NULL : j->impulse + m);
+                                         group ? &accumulated[m - k] : j->shock ? NULL : j->impulse + m, &moved);
                 } else if (motus__overlap_in(j, dims, a, b, MOTUS__REACH, 1, n, &depth)) {
-                    motus__pair_solve_in(j, dims, a, b, phase, n, depth, NULL);
+                    motus__pair_solve_in(j, dims, a, b, phase, n, depth, NULL, &moved);
                 }
             }
-            if (walled) motus__wall_contacts(j, j->pairs[k].b, phase);
+            if (walled) moved |= motus__wall_contacts(j, j->pairs[k].b, phase);
+            /* a pass that moved nothing leaves everything its next pass reads as it was: the passes left
+               would do the same nothing (a drop of 10^4 at 1 substep: 8% less time a step in 2D, 14% in 3D) */
+            if (!moved) break;
         }
     }
 }
