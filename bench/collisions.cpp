@@ -1,9 +1,10 @@
 // collisions.cpp - bench/collisions (issue 12, item 8): balls in a box, motus against what a game programmer
 // would pick instead, in the same run and the same scene.
 //   collisions [--out DIR] [--quick] [--sizes N,N,...] [--engines a,b,...] [--dims 2,3] [--scenes drop,pile]
-//              [--cap S] [--run-cap S] [--run-limit S] [--substeps K]
-// Engines: motus (4 substeps a frame, or --substeps K), motus-1substep (motus at one step of dt a frame, the
-// work a peer does a frame), box2d, chipmunk (2D), bullet (3D), brute (N <= 10^4).
+//              [--cap S] [--run-cap S] [--run-limit S] [--substeps K] [--iterations K]
+// Engines: motus (4 substeps a frame, or --substeps K; 4 iterations, or --iterations K), motus-1substep (motus
+// at one step of dt a frame, the work a peer does a frame), motus-1x1 (one substep and one iteration: motus's
+// lightest setting), box2d, chipmunk (2D), bullet (3D), brute (N <= 10^4).
 // Scenes (collisions.h: every engine gets the same start, as doubles):
 //   drop  N balls of radius r = 0.5 m on a jittered grid of spacing 2.2 r above the floor of a box open at the
 //         top, each with a random velocity in [-1, 1] m/s per component (the same seed for every engine), fall
@@ -313,7 +314,7 @@ row run(const cb_engine &e, const start &st, const std::string &scene, const opt
     // motus is what is measured (also at 1 substep): it runs at every size unless a step takes longer than 10
     // caps; a peer is skipped where its step would take longer than one cap (its own measured time at the size
     // below, scaled linearly) or does.
-    const bool subject = std::string(e.name) == "motus" || std::string(e.name) == "motus-1substep";
+    const bool subject = std::string(e.name).rfind("motus", 0) == 0;
     const double cap = subject ? 10 * o.cap : o.cap;
     if (!subject && smaller && smaller->ms * 1e-3 * s.n / smaller->n > cap) {
         out.note = "skipped: predicted " + fmt("%.1f", smaller->ms * 1e-3 * s.n / smaller->n) + " s a step";
@@ -626,13 +627,16 @@ void write_outputs(const options &o, const std::vector<row> &rows, const std::ve
     } else {
         md << "At N = 10^4, motus against each peer: speed-up = the peer's time per step / motus's (target: at "
               "least 5x), and the largest overlap (target: motus's no worse).\n\n";
-        for (const char *subject : {"motus", "motus-1substep"}) {
+        for (const char *subject : {"motus", "motus-1substep", "motus-1x1"}) {
         if (std::string(subject) != "motus") {
             if (!find(rows, subject, 2, "drop", 10000) && !find(rows, subject, 2, "pile", 10000) &&
                 !find(rows, subject, 3, "drop", 10000) && !find(rows, subject, 3, "pile", 10000))
                 continue;
-            md << "\nThe same at 1 substep a frame (motus-1substep: one step of dt a frame, the work a peer does a "
-                  "frame; motus's default above takes 4):\n\n";
+            md << (std::string(subject) == "motus-1substep"
+                       ? "\nThe same at 1 substep a frame (motus-1substep: one step of dt a frame, the work a peer "
+                         "does a frame; motus's default above takes 4):\n\n"
+                       : "\nThe same at 1 substep a frame and 1 iteration (motus-1x1: motus's lightest setting; "
+                         "a peer's speed-up target holds only where its overlap is no smaller):\n\n");
         }
         md << "| dims | scene | peer | peer ms | " << subject << " ms | speed-up | >= 5x | peer overlap | " << subject
            << " overlap | no worse |\n";
@@ -672,7 +676,7 @@ void write_outputs(const options &o, const std::vector<row> &rows, const std::ve
         md << "\nWhere a peer does better than motus (every size both ran):\n\n";
         int wins = 0;
         for (const row &p : rows) {
-            if (p.engine == "motus" || p.engine == "motus-1substep" || p.skipped()) continue;
+            if (p.engine.rfind("motus", 0) == 0 || p.skipped()) continue;
             const row *m = find(rows, "motus", p.dims, p.scene, p.n);
             if (!m || m->skipped()) continue;
             std::string what;
@@ -769,7 +773,8 @@ std::vector<std::string> split(const std::string &s) {
 
 int usage() {
     std::fprintf(stderr, "usage: collisions [--out DIR] [--quick] [--sizes N,N,...] [--engines a,b,...] [--dims 2,3] "
-                         "[--scenes drop,pile] [--cap S] [--run-cap S] [--run-limit S] [--substeps K]\n");
+                         "[--scenes drop,pile] [--cap S] [--run-cap S] [--run-limit S] [--substeps K] "
+                         "[--iterations K]\n");
     return 2;
 }
 
@@ -807,6 +812,7 @@ int main(int argc, char **argv) {
 #ifdef CB_HAVE_MOTUS
         &cb_engine_motus,
         &cb_engine_motus_one_substep,
+        &cb_engine_motus_light,
 #endif
 #ifdef CB_HAVE_BOX2D
         &cb_engine_box2d,

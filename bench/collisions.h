@@ -47,6 +47,7 @@ extern const cb_engine cb_engine_brute;
 #ifdef CB_HAVE_MOTUS
 extern const cb_engine cb_engine_motus;
 extern const cb_engine cb_engine_motus_one_substep; /* "motus-1substep": motus at 1 substep a frame */
+extern const cb_engine cb_engine_motus_light;       /* "motus-1x1": 1 substep a frame, 1 iteration */
 #endif
 #ifdef CB_HAVE_BOX2D
 extern const cb_engine cb_engine_box2d;

@@ -117,7 +117,7 @@ static void motus_world_read(void *world, double *x[3], double *v[3]) {
 
 static const char *motus_world_describe(void) {
     static char text[400];
-    snprintf(text, sizeof text, "motus %s, %s; motus_step, 4 substeps a frame (or --substeps K), contacts.iterations default (4), "
+    snprintf(text, sizeof text, "motus %s, %s; motus_step, 4 substeps a frame (or --substeps K), contacts.iterations default (4, or --iterations K), "
              "friction 0, restitution 0; the calling thread alone, and at N = 10^5 also with scene.parallel_for "
              "= motus_pool_for of tests/support/motus_pool.h, 1 and 2 threads", MOTUS_VERSION_STRING,
              sizeof(motus_real) == 8 ? "double" : "float");
@@ -142,3 +142,18 @@ static const char *motus_one_substep_describe(void) {
 const cb_engine cb_engine_motus_one_substep = {"motus-1substep", (1 << 2) | (1 << 3), 0, motus_one_substep_create,
                                                motus_world_step, motus_world_read, motus_world_destroy,
                                                motus_one_substep_describe};
+
+/* motus at its lightest setting a game would pick for speed: one substep a frame and one iteration (one
+   velocity sweep and one position sweep, each followed by its support sweep); the calling thread alone. */
+static void *motus_light_create(const cb_scene *s) {
+    cb_scene light = *s;
+    light.substeps = 1;
+    light.iterations = 1;
+    light.threads = 0;
+    return motus_world_create(&light);
+}
+static const char *motus_light_describe(void) {
+    return "motus as above at 1 substep a frame and contacts.iterations = 1, the calling thread alone";
+}
+const cb_engine cb_engine_motus_light = {"motus-1x1", (1 << 2) | (1 << 3), 0, motus_light_create, motus_world_step,
+                                         motus_world_read, motus_world_destroy, motus_light_describe};

@@ -15,9 +15,9 @@ n_max = 2e6
 load out."/plot/info.gp"
 
 curve(key, engine) = sprintf("%s/plot/%s_%s.dat", out, key, engine)
-colour(e) = e eq "motus" ? "#1f77b4" : e eq "motus-1substep" ? "#7fb8e0" : e eq "box2d" ? "#d62728" : e eq "chipmunk" ? "#2ca02c" : \
+colour(e) = e eq "motus" ? "#1f77b4" : e eq "motus-1substep" ? "#7fb8e0" : e eq "motus-1x1" ? "#17becf" : e eq "box2d" ? "#d62728" : e eq "chipmunk" ? "#2ca02c" : \
             e eq "bullet" ? "#ff7f0e" : e eq "brute" ? "#7f7f7f" : "#9467bd"
-point(e) = e eq "motus" ? 7 : e eq "motus-1substep" ? 6 : e eq "box2d" ? 5 : e eq "chipmunk" ? 9 : e eq "bullet" ? 11 : 13
+point(e) = e eq "motus" ? 7 : e eq "motus-1substep" ? 6 : e eq "motus-1x1" ? 4 : e eq "box2d" ? 5 : e eq "chipmunk" ? 9 : e eq "bullet" ? 11 : 13
 width(e) = e eq "motus" ? 3 : 2
 
 set terminal pngcairo size 1400,1000 font "sans,11"

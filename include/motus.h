@@ -3475,6 +3475,10 @@ MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int 
     motus_real vn = 0, target, allowed, impulse, t[3] = {0, 0, 0}, t2 = 0, tangential, friction;
     int d, fast;
     if (w == 0) return; /* two immovable particles */
+    /* the support sweep acts only on a particle resting on a support (see below): most pairs end here */
+    if (j->shock && (!(j->supported[a] || motus__solved_later(j, a, b)) || wb == 0 ||
+                     !(n[j->up_axis] * j->up_sign > MOTUS_R(0.5))))
+        return;
     for (d = 0; d < dims; ++d) vn += (j->v[d][pb] - j->v[d][pa]) * n[d];
     /* A fast approach (faster than the threshold) is a collision once they touch or overlap: it bounces with
        the approach speed it has then. A slow one is a resting contact: within a few % of touching (a pile's
@@ -3492,8 +3496,6 @@ MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int 
            made). Relative to a support still sinking, an error left in one row would be passed on to every
            row above it and add up: a 10^5-ball frictionless 2D pile sank through itself. */
         motus_real support = 0;
-        if (!(j->supported[a] || motus__solved_later(j, a, b)) || wb == 0 || !(n[j->up_axis] * j->up_sign > MOTUS_R(0.5)))
-            return;
         j->supported[b] = 1;
         wa = 0, w = wb;
         for (d = 0; d < dims; ++d) support += j->v[d][pa] * n[d];

@@ -4,7 +4,8 @@
 # ("drop") and packed at rest on its floor ("pile"), in 2D and 3D, stepped by motus_step with contacts and, in
 # the same run on the same start, by what a game programmer would pick instead: Box2D 2.4 circles, Chipmunk 7
 # circles (2D), Bullet spheres (3D), and a brute-force pair loop with motus's contact model (N <= 10^4); motus
-# also at 1 substep a frame ("motus-1substep": one step of dt a frame, as the peers step). Per
+# also at 1 substep a frame ("motus-1substep": one step of dt a frame, as the peers step) and at 1 substep and
+# 1 iteration ("motus-1x1": its lightest setting). Per
 # engine and N: time per step (median), the largest overlap as a fraction of the radius, the kinetic energy
 # over the initial potential energy (bench/collisions.cpp says exactly how). It installs the Debian 12 packages
 # it needs and are missing (compilers, CMake, libbox2d-dev, libchipmunk-dev, libbullet-dev, gnuplot), builds
