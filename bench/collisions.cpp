@@ -1,7 +1,7 @@
 // collisions.cpp - bench/collisions (issue 12, item 8): balls in a box, motus against what a game programmer
 // would pick instead, in the same run and the same scene.
 //   collisions [--out DIR] [--quick] [--sizes N,N,...] [--engines a,b,...] [--dims 2,3] [--scenes drop,pile]
-//              [--cap S] [--run-cap S] [--run-limit S] [--substeps K] [--iterations K]
+//              [--cap S] [--run-cap S] [--run-limit S] [--substeps K] [--iterations K] [--blocks-along-x]
 // Engines: motus (4 substeps a frame, or --substeps K; 4 iterations, or --iterations K), motus-1substep (motus
 // at one step of dt a frame, the work a peer does a frame), motus-1x1 (one substep and one iteration: motus's
 // lightest setting), box2d, chipmunk (2D), bullet (3D), brute (N <= 10^4).
@@ -36,6 +36,8 @@
 // overlaps of both solvers, and how busy the machine was. The pool rows are in the tables and the CSV, not in
 // the figure.
 // --quick: N = 300 and 2000, a few frames: a smoke run in seconds (ctest bench.collisions_quick_run).
+// --blocks-along-x: each start's balls stored in blocks 4.5 m wide along x (the same balls, another order in
+// memory), so that the slabs of motus's 2 threads share no cache line (see the README's On 2 threads).
 // Writes DIR/collisions.csv, DIR/collisions.md (also printed on stdout), DIR/plot/*.dat and DIR/plot/info.gp
 // for bench/plot_collisions.gp; progress goes to stderr. scripts/collisions.sh runs it and draws the figure.
 #include "collisions.h"
@@ -72,6 +74,7 @@ struct options {
     double cap = 2.0, run_cap = 40.0, run_limit = 150.0;
     int substeps = 4; // motus's and the brute-force loop's substeps a frame (the peers take one step a frame)
     int iterations = 0; // motus's and the brute-force loop's solver sweeps a substep (0: motus's default, 4)
+    bool blocks = false; // --blocks-along-x: the start's particles stored in blocks along x (see make_start)
 };
 
 struct frames {
@@ -99,7 +102,7 @@ uint64_t splitmix(uint64_t &s) {
 }
 double uniform(uint64_t &s, double lo, double hi) { return lo + (hi - lo) * (double)(splitmix(s) >> 11) / 9007199254740992.0; }
 
-void make_start(start &st, int dims, const std::string &scene, int n, int substeps, int iterations) {
+void make_start(start &st, int dims, const std::string &scene, int n, int substeps, int iterations, bool blocks) {
     const double r = 0.5;
     cb_scene &s = st.scene;
     s = cb_scene{};
@@ -160,6 +163,21 @@ void make_start(start &st, int dims, const std::string &scene, int n, int subste
                 }
         for (int c = 0; c < dims; ++c)
             for (int i = 0; i < n; ++i) st.v[c][i] = uniform(seed, -1, 1);
+    }
+    if (blocks) {
+        // The same balls stored in blocks 4.5 m wide along x (about one of motus's slabs, 4 cells of 1.125 m),
+        // in their order within a block: a memory layout in which the 2 threads' slabs share no cache line.
+        std::vector<int> order(n);
+        for (int i = 0; i < n; ++i) order[i] = i;
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+            return std::floor(st.x[0][a] / 4.5) < std::floor(st.x[0][b] / 4.5);
+        });
+        for (int c = 0; c < dims; ++c) {
+            std::vector<double> x(n), v(n);
+            for (int i = 0; i < n; ++i) x[i] = st.x[c][order[i]], v[i] = st.v[c][order[i]];
+            st.x[c].swap(x);
+            st.v[c].swap(v);
+        }
     }
     st.pe0 = 0;
     for (int i = 0; i < n; ++i) st.pe0 += s.g * (st.x[1][i] - (s.box_min[1] + r));
@@ -774,7 +792,7 @@ std::vector<std::string> split(const std::string &s) {
 int usage() {
     std::fprintf(stderr, "usage: collisions [--out DIR] [--quick] [--sizes N,N,...] [--engines a,b,...] [--dims 2,3] "
                          "[--scenes drop,pile] [--cap S] [--run-cap S] [--run-limit S] [--substeps K] "
-                         "[--iterations K]\n");
+                         "[--iterations K] [--blocks-along-x]\n");
     return 2;
 }
 
@@ -798,6 +816,7 @@ int main(int argc, char **argv) {
         else if (a == "--cap" && has_value) o.cap = std::atof(argv[++i]);
         else if (a == "--substeps" && has_value) o.substeps = std::atoi(argv[++i]);
         else if (a == "--iterations" && has_value) o.iterations = std::atoi(argv[++i]);
+        else if (a == "--blocks-along-x") o.blocks = true;
         else if (a == "--run-cap" && has_value) o.run_cap = std::atof(argv[++i]);
         else if (a == "--run-limit" && has_value) o.run_limit = std::atof(argv[++i]);
         else return usage();
@@ -857,7 +876,7 @@ int main(int argc, char **argv) {
             for (int n : o.sizes) {
                 const char *scene = scene_name.c_str();
                 start st;
-                make_start(st, dims, scene, n, o.substeps, o.iterations);
+                make_start(st, dims, scene, n, o.substeps, o.iterations, o.blocks);
                 for (const cb_engine *e : engines) {
                     if (!(e->dims_mask & (1 << dims))) continue;
                     const row *smaller = nullptr;
