@@ -47,8 +47,12 @@ static double random_unit(void) { return (double)(random_next() >> 8) / 16777216
    restitution 0.2 and friction 0.3 (walls too), 4 substeps a frame. Scattered (packed = 0): in rows 0.1 r
    apart, moving sideways at up to 2 m/s, so that the columns break up. Packed: rows offset by half a
    spacing (each ball above the gap between two below, or four in 3D), 0.2 r apart, as in a pile at rest:
-   every ball rests on a V of supports, across the slab borders too. */
-static void world_init(world *w, int dims, int n, motus_real side, uint32_t seed, int packed) {
+   every ball rests on a V of supports, across the slab borders too. Stored along x fastest, then z, then
+   up; with WORLD_DEPTH_FASTEST (3D) along z fastest, then x: the slabs are then across x (motus cuts them
+   across the axis along which the array's order crosses fewer of their borders), else across z. */
+enum { WORLD_PACKED = 1, WORLD_DEPTH_FASTEST = 2 };
+static void world_init(world *w, int dims, int n, motus_real side, uint32_t seed, int flags) {
+    const int packed = flags & WORLD_PACKED;
     const motus_real r = MOTUS_R(0.5), spacing = MOTUS_R(2.2) * r;
     /* packed rows: neighbours in the rows above and below are `spacing` apart too */
     const motus_real row = packed ? (dims == 2 ? MOTUS_R(0.8660254) : MOTUS_R(0.70710678)) * spacing : spacing;
@@ -74,8 +78,10 @@ static void world_init(world *w, int dims, int n, motus_real side, uint32_t seed
     }
     random_state = seed;
     for (i = 0; i < n; ++i) {
-        const int column = i % per_row, layer = i / per_row;
-        const int height = dims == 2 ? layer : layer / per_row, depth = dims == 2 ? 0 : layer % per_row;
+        const int fastest = i % per_row, layer = i / per_row;
+        const int height = dims == 2 ? layer : layer / per_row, next = dims == 2 ? 0 : layer % per_row;
+        const int column = flags & WORLD_DEPTH_FASTEST ? next : fastest;
+        const int depth = flags & WORLD_DEPTH_FASTEST ? fastest : next;
         const motus_real shift = packed && (height & 1) ? spacing / 2 : 0;
         w->x[0][i] = r * MOTUS_R(1.1) + (motus_real)column * spacing + shift;
         w->x[1][i] = r * MOTUS_R(1.1) + (motus_real)height * row;
@@ -145,10 +151,11 @@ static void shuffled_for(void *context, motus_task_function task, void *task_con
 
 /* The same bits after every frame, however the tasks are split and run: against one call of all the tasks
    in order on the calling thread, through pools of 2 and 3 threads, in reverse, shuffled. The slabs are
-   in use: without parallel_for the bits differ. */
+   in use: without parallel_for the bits differ. In 3D twice: the slabs across z, then across x. */
 TEST(same_bits_however_split) {
-    int dims;
-    for (dims = 2; dims <= 3; ++dims) {
+    int setup;
+    for (setup = 0; setup < 3; ++setup) {
+        const int dims = setup == 0 ? 2 : 3, flags = setup == 2 ? WORLD_DEPTH_FASTEST : 0;
         enum { WAYS = 5 };
         world w[WAYS], alone;
         motus_pool pool2, pool3;
@@ -158,8 +165,8 @@ TEST(same_bits_however_split) {
         int k, frame, differ = 0;
         ENSURE_EQ_INT(motus_pool_start(&pool2, 2), 0);
         ENSURE_EQ_INT(motus_pool_start(&pool3, 3), 0);
-        for (k = 0; k < WAYS; ++k) world_init(&w[k], dims, n, dims == 2 ? 100 : 24, 11, 0);
-        world_init(&alone, dims, n, dims == 2 ? 100 : 24, 11, 0);
+        for (k = 0; k < WAYS; ++k) world_init(&w[k], dims, n, dims == 2 ? 100 : 24, 11, flags);
+        world_init(&alone, dims, n, dims == 2 ? 100 : 24, 11, flags);
         w[0].scene.parallel_for = in_order_for;
         w[1].scene.parallel_for = motus_pool_for, w[1].scene.parallel_context = &pool2;
         w[2].scene.parallel_for = motus_pool_for, w[2].scene.parallel_context = &pool3;
@@ -181,7 +188,7 @@ TEST(same_bits_however_split) {
         ENSURE(!same_state(&w[0], &alone)); /* the slabs' order */
         /* the work was handed out: several tasks per call (the pair search of 5,000 particles in tasks of
            2,048, the sweeps in at least 4 slabs), in most calls */
-        printf("  %dD: %d calls with more than one task, up to %d tasks\n", dims, shuffled.shared_calls, shuffled.largest);
+        printf("  %dD%s: %d calls with more than one task, up to %d tasks\n", dims, flags ? " (z fastest)" : "", shuffled.shared_calls, shuffled.largest);
         ENSURE(shuffled.largest >= 3);
         ENSURE(shuffled.shared_calls >= frames * 4 * 10);
         ENSURE_EQ_INT(reverse.shared_calls, shuffled.shared_calls);
@@ -230,7 +237,7 @@ TEST(pile_settles_in_slabs) {
         motus_contact_pair *pairs;
         int i, d, s, found = 0, capacity = 16 * n;
         ENSURE_EQ_INT(motus_pool_start(&pool, 2), 0);
-        world_init(&w, dims, n, dims == 2 ? 100 : 24, 3, 1);
+        world_init(&w, dims, n, dims == 2 ? 100 : 24, 3, WORLD_PACKED);
         w.scene.parallel_for = motus_pool_for, w.scene.parallel_context = &pool;
         /* the energy it starts with: its height above the floor, and its sideways speed */
         for (i = 0; i < n; ++i) {
