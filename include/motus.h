@@ -3699,11 +3699,19 @@ MOTUS__KI size_t motus__pairs_of_in(motus__contact_job *j, int dims, int i, int 
     int cell;
     size_t found = 0;
     for (cell = 0; cell < runs; ++cell) {
-        const int t0 = c0 + j->half[cell][0], t1 = c1 + j->half[cell][1], t2 = c2 + j->half[cell][2];
-        const ptrdiff_t b = j->dense ? own + j->run_start[cell] : (ptrdiff_t)motus__cell_hash(t0, t1, t2, j->mask);
-        const int own_end = cell > 0 ? 0 : j->table[b + 1]; /* the own cell's particles end here */
-        int other, end;
-        for (other = j->table[b], end = j->table[b + (j->dense ? j->run_length[cell] : 1)]; other < end; ++other) {
+        /* dense: run `cell` of buckets from b; hashed: half-neighbour `cell` (t0, t1, t2), in bucket b */
+        int t0 = 0, t1 = 0, t2 = 0, own_end, other, end;
+        ptrdiff_t b;
+        if (j->dense) {
+            b = own + j->run_start[cell];
+            end = j->table[b + j->run_length[cell]];
+        } else {
+            t0 = c0 + j->half[cell][0], t1 = c1 + j->half[cell][1], t2 = c2 + j->half[cell][2];
+            b = (ptrdiff_t)motus__cell_hash(t0, t1, t2, j->mask);
+            end = j->table[b + 1];
+        }
+        own_end = cell > 0 ? 0 : j->table[b + 1]; /* the own cell's particles end here */
+        for (other = j->table[b]; other < end; ++other) {
             const int q = j->sorted[other];
             motus_real n[3] = {0, 0, 0}, depth;
             int lower, upper, d;
