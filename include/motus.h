@@ -628,9 +628,9 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      pair search in tasks of 2,048 particles or more (each task lists its pairs into its own part of the
      list, and a stable sort joins them as one thread would have: the same bits as without parallel_for),
      and, from 4,096 particles, the sweeps in slabs: the cells across an axis that is not up (x under
-     gravity along -y in 2D; in 3D x or z, whichever the particles' array order crosses fewer slab borders
-     along, so that two threads write apart in memory: store your particles roughly sorted along one
-     horizontal axis, e.g. in the order you spawned them row by row, and the slabs follow; ties go to x)
+     gravity along -y in 2D; in 3D x or z, whichever keeps the particles of a cache line of the arrays
+     closer to one slab, so that two threads write apart in memory: particles stored roughly in order
+     along one horizontal axis, e.g. spawned row by row, or sorted now and then, and the slabs follow)
      are cut into slabs as wide to a cell, at least 16 cells in 2D and 4 in 3D, as many as fit up to 64,
      rounded down to a multiple of 12 (4 or 8 below 12): each colour has an even number of slabs, which 2,
      3, 4 or 6 threads share evenly. A pair belongs to the slab of its upper particle (its supports are
@@ -3339,10 +3339,12 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
            of 12 (from 12 up; else of 4), all as wide to a cell. Each colour then has an even number of slabs
            of about one weight, which 2, 3, 4 or 6 threads share evenly (13 slabs of 4 cells, the last of
            one, had 2 threads take 4 and 3 of the 7 even ones: 1.59x one thread on a 3D pile). In 3D, of the
-           two axes across up, the one along which the particles' array order crosses fewer slab borders
-           (the first on a tie): the tasks then write apart in memory. Across x, a 3D drop of 10^5 balls
-           stored x fastest, then z, had 16 balls of a 64-byte line of x or v in four slabs, two threads
-           wrote the same lines at every border and ran 1.43x one thread; across z, 1.80x. */
+           two axes across up, the one along which fewer particles are two slabs or more from the particle
+           a cache line before them in the array (the first on a tie): the threads then write apart in
+           memory. Across x, a 3D drop of 10^5 balls stored x fastest, then z, had the 16 balls of a 64-byte
+           line of x or v in about four slabs, two threads wrote the same lines, and ran 1.43x one thread;
+           across z, 1.76-1.80x. The same balls stored in blocks along x as wide as a slab: across x 1.82x,
+           across z 1.67x (a count of the slab borders between array neighbours had chosen z there). */
         if (count >= MOTUS_CONTACT_SLAB_MIN_COUNT && scene->parallel_for) {
             const int least = dims == 3 ? MOTUS__SLAB_CELLS_3D : MOTUS__SLAB_CELLS_2D;
             size_t fewest = 0;
@@ -3361,15 +3363,16 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
                 slabs = slabs >= 12 ? slabs / 12 * 12 : slabs / 4 * 4;
                 if (slabs < 4) continue;
                 if (dims == 3) {
-                    /* the borders crossed from one particle to the next in the array (a heuristic: the
-                       slabs in doubles, which spares a division a particle; the same on every build) */
-                    const int *cell = j->cell[a];
+                    /* the particles a 64-byte line apart in the array that are two slabs or more apart:
+                       slabs one apart are of two colours and never solved at once, slabs two apart may be,
+                       on two threads, which then write the same lines (a heuristic, in doubles: no division
+                       a particle, the same count on every build) */
+                    const int *cell = j->cell[a], apart = (int)(64 / sizeof(motus_real));
                     const double per_cell = (double)slabs / extent;
-                    int previous = (int)((double)(cell[0] - slab_extent[0]) * per_cell);
-                    for (i = 1; i < count; ++i) {
+                    for (i = apart; i < count; ++i) {
                         const int slab = (int)((double)(cell[i] - slab_extent[0]) * per_cell);
-                        crossings += slab != previous;
-                        previous = slab;
+                        const int before = (int)((double)(cell[i - apart] - slab_extent[0]) * per_cell);
+                        crossings += slab - before >= 2 || before - slab >= 2;
                     }
                 }
                 if (j->slabs > 1 && crossings >= fewest) continue;

@@ -49,7 +49,7 @@ static double random_unit(void) { return (double)(random_next() >> 8) / 16777216
    spacing (each ball above the gap between two below, or four in 3D), 0.2 r apart, as in a pile at rest:
    every ball rests on a V of supports, across the slab borders too. Stored along x fastest, then z, then
    up; with WORLD_DEPTH_FASTEST (3D) along z fastest, then x: the slabs are then across x (motus cuts them
-   across the axis along which the array's order crosses fewer of their borders), else across z. */
+   across the axis that keeps a cache line's particles nearer one slab), else across z. */
 enum { WORLD_PACKED = 1, WORLD_DEPTH_FASTEST = 2 };
 static void world_init(world *w, int dims, int n, motus_real side, uint32_t seed, int flags) {
     const int packed = flags & WORLD_PACKED;
