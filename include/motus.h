@@ -3367,11 +3367,11 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
                        slabs one apart are of two colours and never solved at once, slabs two apart may be,
                        on two threads, which then write the same lines (a heuristic, in doubles: no division
                        a particle, the same count on every build) */
-                    const int *cell = j->cell[a], apart = (int)(64 / sizeof(motus_real));
+                    const int *cell_of = j->cell[a], apart = (int)(64 / sizeof(motus_real));
                     const double per_cell = (double)slabs / extent;
                     for (i = apart; i < count; ++i) {
-                        const int slab = (int)((double)(cell[i] - slab_extent[0]) * per_cell);
-                        const int before = (int)((double)(cell[i - apart] - slab_extent[0]) * per_cell);
+                        const int slab = (int)((double)(cell_of[i] - slab_extent[0]) * per_cell);
+                        const int before = (int)((double)(cell_of[i - apart] - slab_extent[0]) * per_cell);
                         crossings += slab - before >= 2 || before - slab >= 2;
                     }
                 }
