@@ -3347,11 +3347,11 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
            across z 1.67x (a count of the slab borders between array neighbours had chosen z there). */
         if (count >= MOTUS_CONTACT_SLAB_MIN_COUNT && scene->parallel_for) {
             const int least = dims == 3 ? MOTUS__SLAB_CELLS_3D : MOTUS__SLAB_CELLS_2D;
-            size_t fewest = 0;
+            size_t fewest_far = 0;
             int a;
             for (a = 0; a < dims; ++a) {
                 int extent, slabs;
-                size_t crossings = 0;
+                size_t far_apart = 0; /* particles two slabs or more from the one a line before */
                 if (a == j->up_axis) continue;
                 slab_extent[0] = j->task_cells[0][0][a], slab_extent[1] = j->task_cells[0][1][a];
                 for (t = 1; t < j->tasks; ++t) {
@@ -3372,11 +3372,11 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
                     for (i = apart; i < count; ++i) {
                         const int slab = (int)((double)(cell_of[i] - slab_extent[0]) * per_cell);
                         const int before = (int)((double)(cell_of[i - apart] - slab_extent[0]) * per_cell);
-                        crossings += slab - before >= 2 || before - slab >= 2;
+                        far_apart += slab - before >= 2 || before - slab >= 2;
                     }
                 }
-                if (j->slabs > 1 && crossings >= fewest) continue;
-                fewest = crossings;
+                if (j->slabs > 1 && far_apart >= fewest_far) continue;
+                fewest_far = far_apart;
                 j->slab_axis = a, j->slabs = slabs, j->even_slabs = slabs / 2;
                 j->slab_low = slab_extent[0], j->slab_extent = extent;
             }
