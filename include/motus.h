@@ -1920,13 +1920,13 @@ MOTUS__KI void motus__acceleration(const motus__job *j, const motus__lane *x, co
         MOTUS__EACH_D(a[d] = j->gravity[d];);
     if (t & MOTUS__T_TETHER) { /* a -= (k*(x - tether))*(1/m): the force, then as an accumulated force */
         motus__lane pull[3];
-        motus__mask far = (motus__mask)(zero != zero);
+        motus__mask overflowed = (motus__mask)(zero != zero);
         MOTUS__EACH_D(
             const motus__lane offset = x[d] - j->tether[d];
-            far = far | (motus__mask)(offset - offset != zero); /* overflowed (or NaN) */
+            overflowed = overflowed | (motus__mask)(offset - offset != zero); /* overflowed (or NaN) */
             pull[d] = (offset * j->tether_stiffness) * inverse_mass;
         );
-        if (motus__any(far)) { /* out of line, through copies (see below) */
+        if (motus__any(overflowed)) { /* out of line, through copies (see below) */
             motus__lane x_copy[3], pull_copy[3], inverse_mass_copy = inverse_mass;
             MOTUS__EACH_D(
                 x_copy[d] = x[d];
@@ -3082,12 +3082,12 @@ static void motus__cells_task(void *context, int first, int count) {
         near_wall = j->near_wall + from;
         for (i = from; j->walls && i < to; ++i) {
             const motus_real reach = motus__contact_r(j, i) + 4 * j->largest_radius;
-            int near = 0;
+            int close_to_wall = 0;
             for (d = 0; d < j->dims; ++d) {
                 const motus_real x = j->x[d][(ptrdiff_t)i * j->stride];
-                near |= (x - j->lo[d] < reach) | (j->hi[d] - x < reach); /* Inf - x: never near; overflow: Inf */
+                close_to_wall |= (x - j->lo[d] < reach) | (j->hi[d] - x < reach); /* Inf - x: never near; overflow: Inf */
             }
-            if (near) near_wall[near_walls++] = i;
+            if (close_to_wall) near_wall[near_walls++] = i;
         }
         j->task_near[t] = near_walls;
         for (i = from; j->grid && i < to; ++i) {
@@ -3430,14 +3430,14 @@ static int motus__pair_task(const motus__contact_job *j, int upper) {
 MOTUS__KI int motus__overlap_in(const motus__contact_job *j, int dims, int a, int b, motus_real reach, int overlapping,
                                 motus_real *normal, motus_real *depth) {
     const ptrdiff_t pa = (ptrdiff_t)a * j->stride, pb = (ptrdiff_t)b * j->stride;
-    const motus_real sum = (motus__contact_r(j, a) + motus__contact_r(j, b)) * j->scale, near = sum * reach;
+    const motus_real sum = (motus__contact_r(j, a) + motus__contact_r(j, b)) * j->scale, touching_at = sum * reach;
     motus_real u[3] = {0, 0, 0}, d2 = 0, distance;
     int d;
     for (d = 0; d < dims; ++d) {
         u[d] = (j->x[d][pb] - j->x[d][pa]) * j->scale; /* Inf when far apart: no contact */
         d2 += u[d] * u[d];
     }
-    if (!(d2 < near * near)) return 0;
+    if (!(d2 < touching_at * touching_at)) return 0;
     distance = MOTUS_SQRT(d2);
     *depth = (sum - distance) * j->inverse_scale;
     if (overlapping && !(*depth > 0)) return 0;

@@ -5,7 +5,13 @@
    matrix see all of them. Also compiled as C++ (-x c++). Structs are zeroed with memset: `= {0}` warns in
    C++ under -Wextra (missing initializers). */
 #define MOTUS_IMPLEMENTATION
+/* <windows.h> (minwindef.h, MSVC and MinGW) defines near and far as nothing: a local of either name in the
+   implementation would not compile after it (motus.h had three until 2026-11-27). */
+#define near
+#define far
 #include "motus.h"
+#undef near
+#undef far
 
 #include <string.h>
 
