@@ -3182,7 +3182,7 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
     motus_real largest_radius = 0, cell, g_max = 0, g_sum = 0;
     motus_real *reals = (motus_real *)(void *)((char *)memory + l->coupled + l->copy);
     int *ints = (int *)(void *)(reals + 2 * 4 * l->pair_capacity);
-    int i, d, t, count = state->count;
+    int i, d, t, count = state->count, low[3], high[3];
     memset(j, 0, sizeof *j);
     motus__walls_of(scene, lo, hi);
     j->dims = dims;
@@ -3279,20 +3279,21 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
         for (i = 0; i < count; ++i) j->order[i] = j->rank[i] = i; /* index order */
         return;
     }
+    /* the lowest and highest cell on each axis, over the tasks: the dense grid's span and the slabs' */
+    for (d = 0; d < 3; ++d) {
+        low[d] = j->task_cells[0][0][d], high[d] = j->task_cells[0][1][d];
+        for (t = 1; t < j->tasks; ++t) {
+            if (j->task_cells[t][0][d] < low[d]) low[d] = j->task_cells[t][0][d];
+            if (j->task_cells[t][1][d] > high[d]) high[d] = j->task_cells[t][1][d];
+        }
+    }
     {
         /* the dense grid where it fits in the table: the cells spanned, one more each side (the neighbours
            of the outermost), the first axis of the half neighbourhood fastest (see motus__contact_job) */
         const int axis = j->up_axis, first = axis == 0 ? 1 : 0, second = 3 - axis - first;
         const int by[3] = {first, second, axis};
         double cells = 1;
-        int low[3], high[3], k;
-        for (d = 0; d < 3; ++d) {
-            low[d] = j->task_cells[0][0][d], high[d] = j->task_cells[0][1][d];
-            for (t = 1; t < j->tasks; ++t) {
-                if (j->task_cells[t][0][d] < low[d]) low[d] = j->task_cells[t][0][d];
-                if (j->task_cells[t][1][d] > high[d]) high[d] = j->task_cells[t][1][d];
-            }
-        }
+        int k;
         for (k = 0; k < 3; ++k) {
             d = by[k];
             j->dense_stride[d] = (ptrdiff_t)cells;
@@ -3314,7 +3315,7 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
        contacts then come before the rows they carry, so one sweep carries a push up the whole pile. */
     {
         const int axis = j->up_axis, first = axis == 0 ? 1 : 0, second = 3 - axis - first;
-        int o[3], slab_extent[2], k;
+        int o[3], k;
         j->half_count = 0;
         for (o[axis] = 0; o[axis] <= 1; ++o[axis])
             for (o[second] = dims == 3 ? -1 : 0; o[second] <= (dims == 3 ? 1 : 0); ++o[second])
@@ -3353,12 +3354,7 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
                 int extent, slabs;
                 size_t far_apart = 0; /* particles two slabs or more from the one a line before */
                 if (a == j->up_axis) continue;
-                slab_extent[0] = j->task_cells[0][0][a], slab_extent[1] = j->task_cells[0][1][a];
-                for (t = 1; t < j->tasks; ++t) {
-                    if (j->task_cells[t][0][a] < slab_extent[0]) slab_extent[0] = j->task_cells[t][0][a];
-                    if (j->task_cells[t][1][a] > slab_extent[1]) slab_extent[1] = j->task_cells[t][1][a];
-                }
-                extent = slab_extent[1] - slab_extent[0] + 1; /* cell numbers: below 2^29 in magnitude */
+                extent = high[a] - low[a] + 1; /* cell numbers: below 2^29 in magnitude */
                 slabs = extent / least < MOTUS__SLABS ? extent / least : MOTUS__SLABS;
                 slabs = slabs >= 12 ? slabs / 12 * 12 : slabs / 4 * 4;
                 if (slabs < 4) continue;
@@ -3370,15 +3366,15 @@ static void motus__contact_job_init(motus__contact_job *j, const motus_scene *sc
                     const int *cell_of = j->cell[a], apart = (int)(64 / sizeof(motus_real));
                     const double per_cell = (double)slabs / extent;
                     for (i = apart; i < count; ++i) {
-                        const int slab = (int)((double)(cell_of[i] - slab_extent[0]) * per_cell);
-                        const int before = (int)((double)(cell_of[i - apart] - slab_extent[0]) * per_cell);
+                        const int slab = (int)((double)(cell_of[i] - low[a]) * per_cell);
+                        const int before = (int)((double)(cell_of[i - apart] - low[a]) * per_cell);
                         far_apart += slab - before >= 2 || before - slab >= 2;
                     }
                 }
                 if (j->slabs > 1 && far_apart >= fewest_far) continue;
                 fewest_far = far_apart;
                 j->slab_axis = a, j->slabs = slabs, j->even_slabs = slabs / 2;
-                j->slab_low = slab_extent[0], j->slab_extent = extent;
+                j->slab_low = low[a], j->slab_extent = extent;
             }
         }
         if (j->slabs > 1) motus__for(scene, motus__slabs_task, j, j->tasks); /* each particle's slab's task */
