@@ -41,7 +41,7 @@
        motus_state state = motus_state_of_particles(balls, count);   // your motus_particle array, or:
        // state.dimensions = 3; state.count = n; state.position[0] = x; ... (one array per component)
        motus_result r = motus_step(&scene, &state, dt, NULL, 0);
-       if (r != MOTUS_OK) fprintf(stderr, "motus: %s\n", motus_result_string(r));
+       if (r != MOTUS_OK) fprintf(stderr, "motus: %s\n", motus_result_string(r));   // <stdio.h>
 
    Forces that couple particles (springs, a callback) and collisions need working memory:
    motus_scratch_size() bytes, yours, passed to motus_step. motus allocates nothing and keeps no global
@@ -53,7 +53,7 @@
        scene.bounds_min = motus_v3(0, 0, 0);           // the walls they rest against
        scene.bounds_max = motus_v3(800, 600, 0);
        size_t bytes = motus_scratch_size(&scene, &state);
-       void *scratch = malloc(bytes);                  // once, not every frame
+       void *scratch = malloc(bytes);                  // <stdlib.h>; once, not every frame
        motus_step(&scene, &state, dt, scratch, bytes);
 
    >>conventions
@@ -4303,3 +4303,27 @@ MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const
 #pragma GCC pop_options
 #endif
 #endif /* MOTUS_IMPLEMENTATION */
+
+/*
+   MIT License
+
+   Copyright (c) 2026 the motus developers
+
+   Permission is hereby granted, free of charge, to any person obtaining a copy
+   of this software and associated documentation files (the "Software"), to deal
+   in the Software without restriction, including without limitation the rights
+   to use, copy, modify, merge, publish, distribute, sublicense, and/or sell
+   copies of the Software, and to permit persons to whom the Software is
+   furnished to do so, subject to the following conditions:
+
+   The above copyright notice and this permission notice shall be included in all
+   copies or substantial portions of the Software.
+
+   THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR
+   IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY,
+   FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN NO EVENT SHALL THE
+   AUTHORS OR COPYRIGHT HOLDERS BE LIABLE FOR ANY CLAIM, DAMAGES OR OTHER
+   LIABILITY, WHETHER IN AN ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM,
+   OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE
+   SOFTWARE.
+*/

@@ -18,7 +18,7 @@
 #                    states of 1 and 2 threads compared bit for bit), the machine and how busy it was (also
 #                    printed on stdout; progress goes to stderr)
 #   collisions.png   ns per particle-step against N, one line per engine (2D, 3D; drop, pile)
-# and copies the figure to docs/collisions.png for the README. About 8-10 minutes on 2 cores; run it on an
+# and copies the figure to docs/collisions.png for the README. About 6 minutes on 2 cores; run it on an
 # otherwise idle machine (the report says how busy it was). A peer is skipped at a size where one step would
 # take more than 2 s (--cap S), and the table says so. QUICK=1 (or --quick): N = 300 and 2000, a few frames,
 # docs/ left as it was. Other options go to the program: --sizes N,N,... --engines motus,box2d,... --cap S.

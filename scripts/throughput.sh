@@ -15,7 +15,7 @@
 #   native_verify.csv, o2_verify.csv  whether every method computed what motus did
 #   throughput.md                 the targets as measured ratios, and every table (also printed on stdout)
 #   throughput.png, throughput_scenes.png, throughput_o2.png
-# and copies the figures to docs/throughput*.png for the README. About 10 minutes on 2 cores; run it on an
+# and copies the figures to docs/throughput*.png for the README. About 7 minutes on 2 cores; run it on an
 # otherwise idle machine (the report says how busy it was: other processes slow the 2-thread runs most).
 # Options go to both programs: --quick (a smoke run in seconds), --sizes N,N,... , --scenes S,S,...,
 # --dims 2|3, --precision float|double (a run with any of these leaves docs/ as it was), --rounds R (9),
