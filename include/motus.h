@@ -69,10 +69,12 @@
      spring or collision with another particle changes its velocity. It still moves with the velocity it
      has (a platform you slide); give it velocity 0 for a fixed anchor or obstacle. The walls of
      scene.bounds hold every particle, immovable ones too: one placed across a wall is put inside it, and
-     one that slides into a wall stops there. Keep obstacles inside the bounds.
+     one that slides into a wall bounces off it as any particle does (scene.restitution; 0 stops it
+     there). Keep obstacles inside the bounds.
    - Forces accumulate until you clear them. The step does not clear them: a constant force may be added once.
    - Every function that can be handed bad input returns a motus_result; on any result other than MOTUS_OK
-     nothing was written, with one exception: without MOTUS_CHECKED (>>config), motus_step on particle
+     nothing was written, with one exception: without MOTUS_CHECKED (>>config), motus_step (and
+     motus_step_range) on particle
      data that is NaN or Inf, or that overflows, has written the step when it returns MOTUS_ERROR_NOT_FINITE
      (it finds out while it writes, to stay a single pass), and it does not look for a negative inverse
      mass (motus_state_check and MOTUS_CHECKED do). dt == 0 is a valid step of
@@ -101,7 +103,8 @@
    - MOTUS_CONTACT_SUPPORT_SWEEPS (1)    0: contacts without the support sweeps (plain Gauss-Seidel; for
                                          comparison, see >>contacts: deep piles then need many iterations).
    - MOTUS_CONTACT_SLAB_MIN_COUNT (4096) particles from which a contact pass with scene.parallel_for solves
-                                         in slabs that threads can share (see THREADS in >>contacts).
+                                         in slabs that threads can share, where 4 or more slabs fit across
+                                         the scene (see THREADS in >>contacts).
    - MOTUS_ALLOW_FP_CONTRACT (undefined) leave a*b + c contraction to your compiler flags (see >>determinism).
    - MOTUS_ALLOW_FAST_MATH (undefined)   silence the message printed under -ffast-math.
 */
@@ -272,8 +275,8 @@ typedef struct motus_particle3 {
                             "use a smaller dt or smaller forces")                                                \
     X(MOTUS_ERROR_TOO_STIFF, "too stiff for this dt: more substeps needed than allowed, or the method is "        \
                              "unstable on a spring at any dt (explicit Euler, midpoint)")                        \
-    X(MOTUS_ERROR_INVALID_ARGUMENT, "argument out of range: a safety factor must be in (0, 1], a substep cap "    \
-                                    ">= 1, a stable step >= 0")                                                  \
+    X(MOTUS_ERROR_INVALID_ARGUMENT, "argument out of range: a safety factor must be in (0, 1], a stable step "    \
+                                    ">= 0")                                                                      \
     X(MOTUS_ERROR_INVALID_FRAME_TIME, "frame time must be finite and >= 0 seconds; the clock was left as it was")
 
 #define MOTUS__RESULT_ENUM(name, text) name,
@@ -300,7 +303,8 @@ typedef enum motus_method { MOTUS__METHODS(MOTUS__METHOD_ENUM) MOTUS_METHOD_COUN
 /* A spring between particles a and b, or from a to a fixed `anchor` (b = -1). The same in 2D and 3D (z is
    ignored in 2D). Hooke with damping on the rate of stretch:
        F_a = -(k*(|d| - L) + c*((v_a - v_b).d/|d|)) * d/|d|,  d = x_a - x_b;  F_b = -F_a
-   With rest length L = 0 this is F_a = -k*d - c*((v_a - v_b).d/|d|^2)*d: no square root. */
+   With rest length L = 0 this is F_a = -k*d - c*((v_a - v_b).d/|d|^2)*d: without damping (c = 0), no
+   square root. */
 typedef struct motus_spring {
     int a, b;
     motus_vec3 anchor;      /* the fixed end when b == -1 */
@@ -343,8 +347,9 @@ typedef struct motus_contact_pair {
    that can run at once to scene.parallel_for: run task(task_context, first, count) over the tasks
    [0, task_count), in ranges split however you like, on whatever threads, and return when all have run.
    The tasks of one call touch disjoint particles, so the result is the same bits however they are split,
-   in any order, on any number of threads. From 4,096 particles the solver then works in slabs, which
-   gives other bits than without parallel_for (see THREADS in >>contacts). */
+   in any order, on any number of threads. From 4,096 particles (MOTUS_CONTACT_SLAB_MIN_COUNT), in a scene
+   wide enough for 4 slabs across it, the solver then works in slabs, which gives other bits than without
+   parallel_for (see THREADS in >>contacts). */
 typedef void (*motus_task_function)(void *task_context, int first, int count);
 typedef void (*motus_parallel_for)(void *parallel_context, motus_task_function task, void *task_context,
                                    int task_count);
@@ -358,7 +363,7 @@ typedef struct motus_scene {
     motus_vec3 gravity;             /* m/s^2, a uniform acceleration (z ignored in 2D) */
     motus_real linear_drag;         /* k >= 0, 1/s: a -= k*v */
     motus_real quadratic_drag;      /* c >= 0, 1/m: a -= c*|v|*v */
-    motus_real damping_per_step;    /* in [0, 1]: the fraction of velocity removed after each motus_step
+    motus_real damping_per_step;    /* in [0, 1]: the fraction of velocity removed once each motus_step
                                        (0.01: v *= 0.99 a step, the reference program); frame-rate dependent */
     motus_real damping_per_second;  /* in [0, 1]: the fraction removed per second, v *= (1 - d)^dt; the
                                        same motion at any frame rate. At most one of the two is set. */
@@ -387,8 +392,9 @@ typedef struct motus_scene {
 
 /* Where the particles are: one array per component (structure of arrays), or pointers into your own
    structs with a stride. motus writes position and velocity and reads the rest: the arrays it reads must not
-   share memory with those it writes (arrays that start at one address are refused; other overlaps are not
-   looked for, and a radius or mass that is also a position changes during the step). Zero means default. */
+   share memory with those it writes (a position array that starts where a velocity array does, or another
+   position array, is refused; other overlaps are not looked for, and a radius, mass or force that is also
+   a position changes during the step). Zero means default. */
 typedef struct motus_state {
     int dimensions;              /* 2 or 3 (0: 2) */
     int count;                   /* particles */
@@ -480,8 +486,9 @@ MOTUS_DEF motus_result motus_substeps_for(motus_real dt, motus_real max_stable_d
 
 /* The engine (compiled where MOTUS_IMPLEMENTATION is defined): */
 /* Advances every particle of `state` by dt under `scene`: scene.substeps steps of dt/substeps, each by
-   scene.method with the bounds after it (with contacts on: the contacts and walls after it), then the
-   damping. scratch: motus_scratch_size() bytes for a scene with springs, a callback or contacts, else
+   scene.method with the bounds after it, then the damping. With contacts on, each substep is the method,
+   then the contacts and walls; the damping comes with the last substep's method, before its contacts (a
+   bounce then leaves at the restitution's speed, undamped). scratch: motus_scratch_size() bytes for a scene with springs, a callback or contacts, else
    NULL/0. */
 MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *state, motus_real dt, void *scratch,
                                   size_t scratch_bytes);
@@ -581,7 +588,8 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      particle looks at are 2 runs of neighbouring buckets in 2D (5 in 3D) instead of 5 (14) hashed
      lookups; the same cells in the same order either way, so the same pairs and bits. The pairs nearer
      than 1.1 times the sum of their radii are listed in scratch (4 per particle in 2D, 8 in 3D; past that,
-     the rest are searched again at each sweep, same order). The solver's order is the heights' (an exact radix sort), so
+     the rest are searched again at each sweep, same order). The solver's order is the heights' (a radix sort of heights in 1/64ths of the largest
+     radius, ties in index order), so
      a particle far above or below a pile changes nothing in it.
    - Solver: sequential impulses (projected Gauss-Seidel: Catto, "Iterative Dynamics with Temporal
      Coherence", GDC 2005; Box2D) over `iterations` sweeps of velocities: a pair within 1% of touching

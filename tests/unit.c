@@ -669,6 +669,41 @@ TEST(immovable_particle_ignores_forces_and_damping) {
     ENSURE(wall3.position.x == 11 && wall3.position.y == 4 && wall3.position.z == 11);
 }
 
+/* What >>conventions says of an immovable particle at a wall: it bounces off as any particle does (its
+   velocity reversed and scaled by the restitution), through the particle call and through motus_step, with
+   contacts off and on; with restitution 0 it stops there. */
+TEST(immovable_particle_bounces_off_a_wall) {
+    int contacts, r;
+    for (contacts = 0; contacts <= 1; ++contacts)
+        for (r = 0; r <= 1; ++r) {
+            const motus_real restitution = r ? MOTUS_R(0.5) : 0;
+            motus_particle wall, ball;
+            motus_scene scene;
+            motus_state state;
+            unsigned char scratch[1 << 16];
+            memset(&scene, 0, sizeof scene);
+            scene.bounds_min = motus_v3(0, -100, 0);
+            scene.bounds_max = motus_v3(100, 100, 0);
+            scene.restitution = restitution;
+            scene.contacts.enabled = contacts;
+            scene.contacts.radius = contacts ? 1 : 0;
+            motus_particle_init_immovable(&wall, motus_v2(5, 0));
+            wall.velocity = motus_v2(-10, 0);
+            ball = wall;
+            state = motus_state_of_particles(&wall, 1);
+            ENSURE(motus_scratch_size(&scene, &state) <= sizeof scratch);
+            ENSURE_EQ_INT(motus_step(&scene, &state, 1, scratch, sizeof scratch), MOTUS_OK);
+            ENSURE(wall.velocity.x == 10 * restitution && wall.velocity.y == 0);
+            ENSURE(wall.position.x >= (contacts ? 1 : 0) && wall.position.x <= 5 && wall.position.y == 0);
+            ENSURE(wall.inverse_mass == 0);
+            if (!contacts) { /* the textbook calls: the same */
+                ENSURE_EQ_INT(motus_particle_step(&ball, 1), MOTUS_OK);
+                ENSURE_EQ_INT(motus_particle_bounce(&ball, motus_v2(0, -100), motus_v2(100, 100), restitution), MOTUS_OK);
+                ENSURE(ball.velocity.x == wall.velocity.x && ball.position.x == wall.position.x);
+            }
+        }
+}
+
 /* A force callback that pulls every particle towards the origin and pushes it hard in y. */
 static void pull_callback(void *user_data, const motus_force_query *query) {
     int i, d;
@@ -1340,6 +1375,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(bounce_mirrors_and_clamps),
     TEST_CASE(bounce_with_an_infinite_box_never_writes_infinity),
     TEST_CASE(immovable_particle_ignores_forces_and_damping),
+    TEST_CASE(immovable_particle_bounces_off_a_wall),
     TEST_CASE(immovable_particles_drift_in_every_method),
     TEST_CASE(state_of_particles_points_at_the_fields),
     TEST_CASE(textbook_calls_match_the_full_functions),
