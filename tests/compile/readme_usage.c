@@ -34,8 +34,19 @@ static motus_result many(motus_particle *balls, int count, motus_real dt) {
     return r;
 }
 
-/* Collisions (the README's and >>usage's snippet): balls that pile up on the floor of a box. */
-static motus_result pile(motus_particle *balls, int count, motus_real dt) {
+/* The README's parallel_for snippet, run serially: a pile stepped through it has the bits of one without. */
+typedef struct my_pool_type { int threads; } my_pool_type;
+static my_pool_type my_pool;
+static void my_parallel_for(void *pool, motus_task_function task, void *task_context, int task_count) {
+    /* your job system: e.g. one contiguous range per thread, the calling thread included, then wait for
+       all. Run serially, this is the whole of a correct one (and what a pool of one thread does): */
+    (void)pool;
+    task(task_context, 0, task_count);
+}
+
+/* Collisions (the README's and >>usage's snippet): balls that pile up on the floor of a box; on_threads:
+   through the parallel_for above. */
+static motus_result pile(motus_particle *balls, int count, motus_real dt, int on_threads) {
     motus_scene scene = {0};
     motus_state state = motus_state_of_particles(balls, count);
     motus_result r = MOTUS_OK;
@@ -49,35 +60,10 @@ static motus_result pile(motus_particle *balls, int count, motus_real dt) {
     scene.bounds_max = motus_v3(800, 450, 0);
     size_t bytes = motus_scratch_size(&scene, &state);   /* the grid and the contact list live here */
     void *scratch = malloc(bytes);
-    for (frame = 0; frame < 300 && r == MOTUS_OK; ++frame) r = motus_step(&scene, &state, dt, scratch, bytes);
-    free(scratch);
-    return r;
-}
-
-/* The README's parallel_for snippet, run serially, on the same pile: the same bits as without it. */
-typedef struct my_pool_type { int threads; } my_pool_type;
-static my_pool_type my_pool;
-static void my_parallel_for(void *pool, motus_task_function task, void *task_context, int task_count) {
-    /* your job system: e.g. one contiguous range per thread, the calling thread included, then wait for
-       all. Run serially, this is the whole of a correct one (and what a pool of one thread does): */
-    (void)pool;
-    task(task_context, 0, task_count);
-}
-static motus_result pile_on_threads(motus_particle *balls, int count, motus_real dt) {
-    motus_scene scene = {0};
-    motus_state state = motus_state_of_particles(balls, count);
-    motus_result r = MOTUS_OK;
-    int frame;
-    scene.contacts.enabled = 1;
-    scene.contacts.radius = 8;
-    scene.contacts.restitution = 0.3f;
-    scene.contacts.friction = 0.3f;
-    scene.gravity = motus_v3(0, 500, 0);
-    scene.bounds_max = motus_v3(800, 450, 0);
-    size_t bytes = motus_scratch_size(&scene, &state);
-    void *scratch = malloc(bytes);
-    scene.parallel_for = my_parallel_for;
-    scene.parallel_context = &my_pool;                  /* whatever my_parallel_for receives as pool */
+    if (on_threads) {
+        scene.parallel_for = my_parallel_for;
+        scene.parallel_context = &my_pool;                  /* whatever my_parallel_for receives as pool */
+    }
     for (frame = 0; frame < 300 && r == MOTUS_OK; ++frame) r = motus_step(&scene, &state, dt, scratch, bytes);
     free(scratch);
     return r;
@@ -144,13 +130,13 @@ int main(void) {
     bad |= many(balls, 3, 0.5f) != MOTUS_OK;
     bad |= balls[2].position.x != 2 || !(balls[2].position.y > 1.2f && balls[2].position.y < 1.3f); /* g t^2/2 */
     for (i = 0; i < 3; ++i) motus_particle_init(&balls[i], motus_v2(400, 100 + 20 * (motus_real)i), 1);
-    bad |= pile(balls, 3, 1.0f / 60.0f) != MOTUS_OK;
+    bad |= pile(balls, 3, 1.0f / 60.0f, 0) != MOTUS_OK;
     bad |= balls[2].position.y != 450 - 8 || balls[2].velocity.y != 0; /* the lowest: at rest on the floor */
     bad |= !(balls[0].position.y < 450 - 8 - 31.9f);                      /* two balls up: on top, not inside */
     {
         motus_particle threaded[3];
         for (i = 0; i < 3; ++i) motus_particle_init(&threaded[i], motus_v2(400, 100 + 20 * (motus_real)i), 1);
-        bad |= pile_on_threads(threaded, 3, 1.0f / 60.0f) != MOTUS_OK;
+        bad |= pile(threaded, 3, 1.0f / 60.0f, 1) != MOTUS_OK;
         bad |= memcmp(threaded, balls, sizeof threaded) != 0; /* the same bits as pile() */
     }
     {
