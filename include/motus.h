@@ -488,8 +488,8 @@ MOTUS_DEF motus_result motus_substeps_for(motus_real dt, motus_real max_stable_d
 /* Advances every particle of `state` by dt under `scene`: scene.substeps steps of dt/substeps, each by
    scene.method with the bounds after it, then the damping. With contacts on, each substep is the method,
    then the contacts and walls; the damping comes with the last substep's method, before its contacts (a
-   bounce then leaves at the restitution's speed, undamped). scratch: motus_scratch_size() bytes for a scene with springs, a callback or contacts, else
-   NULL/0. */
+   bounce then leaves at the restitution's speed, undamped). scratch: motus_scratch_size() bytes for a
+   scene with springs, a callback or contacts, else NULL/0. */
 MOTUS_API motus_result motus_step(const motus_scene *scene, const motus_state *state, motus_real dt, void *scratch,
                                   size_t scratch_bytes);
 /* The same over particles [first, first + count) only, for a scene whose forces do not couple particles
@@ -588,9 +588,9 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      particle looks at are 2 runs of neighbouring buckets in 2D (5 in 3D) instead of 5 (14) hashed
      lookups; the same cells in the same order either way, so the same pairs and bits. The pairs nearer
      than 1.1 times the sum of their radii are listed in scratch (4 per particle in 2D, 8 in 3D; past that,
-     the rest are searched again at each sweep, same order). The solver's order is the heights' (a radix sort of heights in 1/64ths of the largest
-     radius, ties in index order), so
-     a particle far above or below a pile changes nothing in it.
+     the rest are searched again at each sweep, same order). The solver's order is the heights' (a radix
+     sort of heights in 1/64ths of the largest radius, ties in index order), so a particle far above or
+     below a pile changes nothing in it.
    - Solver: sequential impulses (projected Gauss-Seidel: Catto, "Iterative Dynamics with Temporal
      Coherence", GDC 2005; Box2D) over `iterations` sweeps of velocities: a pair within 1% of touching
      that approaches at vn < 0 gets the mass-weighted impulse that leaves -restitution*vn, or 0 below the
