@@ -922,6 +922,15 @@ MOTUS_DEF motus_result motus__bounce(motus_vec3 *x, motus_vec3 *v, motus_vec3 lo
 #else
 #define MOTUS__OPAQUE_CLANG(x) (void)0
 #endif
+/* A copy of a pointer that the compiler cannot see is the same pointer. The common paths store the x (and
+   z) components through such a copy and y through the original: GCC's SLP vectoriser (on at -O2) otherwise
+   packs the adjacent stores into one vector store, builds that vector with shuffles, and unpacks it again
+   for the checks (the textbook calls, 2D float, gcc 12 -O2: 5.0 against 3.8 ns a particle). */
+#if defined(__GNUC__) || defined(__clang__)
+#define MOTUS__OPAQUE_POINTER(p) __asm__("" : "+r"(p))
+#else
+#define MOTUS__OPAQUE_POINTER(p) (void)0
+#endif
 /* The walls leave a particle strictly inside them alone: lo < x < hi also says x is finite and the walls
    are valid there (not NaN, lo < hi, lo below the largest real, hi above its negative). */
 MOTUS_DEF int motus__inside(motus_real x, motus_real lo, motus_real hi) { return lo < x && x < hi; }
@@ -929,6 +938,23 @@ MOTUS_DEF int motus__inside(motus_real x, motus_real lo, motus_real hi) { return
 MOTUS_DEF motus__bits motus__magnitude_bits(motus_real x) { return motus__real_bits(x) & ~motus__sign_bit(); }
 /* x in [+0, 1], read from its bits (a -0 or a NaN is not: the rare path takes those). */
 MOTUS_DEF int motus__unit_bits(motus_real x) { return motus__real_bits(x) <= motus__real_bits(MOTUS_R(1.0)); }
+/* x in (0, largest finite], read from its bits: one unsigned compare (+0, -0, negatives, Inf and NaN are
+   not). On an argument the same for every particle (dt, 1/m read twice) the compiler computes it once. */
+MOTUS_DEF int motus__positive_bits(motus_real x) {
+    return (motus__bits)(motus__real_bits(x) - 1u) < (motus__bits)(MOTUS__EXPONENT_MASK - 1u);
+}
+/* damping in [1e-6, 1], from its bits: then 1 - damping is in [0, 1) (something to damp, and not more than
+   all of it). Smaller dampings, and every invalid one, go to the rare path. */
+MOTUS_DEF int motus__damping_bits(motus_real damping) {
+    const motus__bits least = motus__real_bits((motus_real)1e-6);
+    return (motus__bits)(motus__real_bits(damping) - least) <= (motus__bits)(motus__real_bits(MOTUS_R(1.0)) - least);
+}
+/* A damped component that damping neither flushed (|v| >= MOTUS_REST_SPEED) nor found non-finite: one
+   unsigned compare on the magnitude's bits, doubled so that the sign falls out (x86: one lea). */
+MOTUS_DEF int motus__moving_bits(motus_real v) {
+    const motus__bits rest = motus__real_bits((motus_real)(MOTUS_REST_SPEED)) << 1;
+    return (motus__bits)((motus__real_bits(v) << 1) - rest) < (motus__bits)((MOTUS__EXPONENT_MASK << 1) - rest);
+}
 /* The velocity of the common step, one component, without motus__kick's "- v*0": for a finite v that is
    subtracting a zero from F/m + 0, which is never -0, so it changes nothing; for a v that is NaN or Inf
    the position comes out NaN or Inf either way and the step is rejected. */
@@ -946,9 +972,14 @@ MOTUS__RARE motus_result motus__add_force_error(motus_vec3 old, motus_vec3 force
                                                                          : MOTUS_ERROR_NOT_FINITE;
 }
 /* The rare paths: the full functions on the particle. The 2D ones run the 3D code on a copy with z = 0. */
+/* The common path tests the sum of the components: here a sum that overflowed while each component is
+   finite is stored. */
 MOTUS__RARE motus_result motus__particle3_add_force_rare(motus_particle3 *particle, motus_real x, motus_real y,
                                                          motus_real z) {
-    return motus__add_force_error(particle->force, motus_v3(x, y, z), 3);
+    const motus_vec3 sum = motus_vec3_add(particle->force, motus_v3(x, y, z));
+    if (!motus__finite_in(sum, 3)) return motus__add_force_error(particle->force, motus_v3(x, y, z), 3);
+    particle->force = sum;
+    return MOTUS_OK;
 }
 MOTUS__RARE motus_result motus__particle3_step_rare(motus_particle3 *particle, motus_real dt) {
     return motus__step(&particle->position, &particle->velocity, particle->force, particle->inverse_mass, dt, 3);
@@ -980,7 +1011,10 @@ MOTUS_DEF motus_result motus__particle_store(motus_particle *particle, const mot
     return result;
 }
 MOTUS__RARE motus_result motus__particle_add_force_rare(motus_particle *particle, motus_real x, motus_real y) {
-    return motus__add_force_error(motus__v3_of(particle->force), motus_v3(x, y, 0), 2);
+    const motus_vec2 sum = motus_vec2_add(particle->force, motus_v2(x, y));
+    if (!motus_vec2_is_finite(sum)) return motus__add_force_error(motus__v3_of(particle->force), motus_v3(x, y, 0), 2);
+    particle->force = sum;
+    return MOTUS_OK;
 }
 MOTUS__RARE motus_result motus__particle_step_rare(motus_particle *particle, motus_real dt) {
     motus_particle3 p = motus__particle3_of(particle);
@@ -1040,10 +1074,11 @@ MOTUS_DEF motus_result motus_particle_add_force(motus_particle *particle, motus_
     y = particle->force.y;
     MOTUS__OPAQUE_CLANG(x); /* each a load of its own, see MOTUS__OPAQUE */
     MOTUS__OPAQUE_CLANG(y);
-    /* A NaN or Inf among the terms makes the sum so: one test, and the cause only on failure. */
+    /* A NaN or Inf among the terms makes the sum so; and x + y is finite only if both are: one test, and
+       the cause only on failure. */
     x = x + force.x;
     y = y + force.y;
-    if (MOTUS__LIKELY(motus_real_is_finite(x) && motus_real_is_finite(y))) {
+    if (MOTUS__LIKELY(motus_real_is_finite(x + y))) {
         particle->force.x = x;
         particle->force.y = y;
         return MOTUS_OK;
@@ -1071,10 +1106,13 @@ MOTUS_DEF motus_result motus_particle_step(motus_particle *particle, motus_real 
     vy = motus__kick_finite(particle->velocity.y, fy, im, dt);
     xx = particle->position.x + MOTUS__ROUND(vx * dt);
     xy = particle->position.y + MOTUS__ROUND(vy * dt);
-    if (MOTUS__LIKELY(dt > 0 && im > 0 && motus_real_is_finite(xx) && motus_real_is_finite(xy))) {
-        particle->velocity.x = vx;
+    if (MOTUS__LIKELY(motus__positive_bits(dt) && motus__positive_bits(particle->inverse_mass) &&
+                      motus_real_is_finite(xx + xy))) {
+        motus_particle *out = particle; /* see MOTUS__OPAQUE_POINTER */
+        MOTUS__OPAQUE_POINTER(out);
+        out->velocity.x = vx;
         particle->velocity.y = vy;
-        particle->position.x = xx;
+        out->position.x = xx;
         particle->position.y = xy;
         return MOTUS_OK;
     }
@@ -1100,10 +1138,10 @@ MOTUS_DEF motus_result motus_particle_step_compensated(motus_particle *particle,
 /* v *= 1 - damping: the fraction `damping` of the velocity is removed (0.01: the reference's v *= 0.99).
    Frame-rate dependent; damp_per_second is not. damping in [0, 1]. */
 MOTUS_DEF motus_result motus_particle_damp_per_step(motus_particle *particle, motus_real damping) {
-    const motus_real kept = MOTUS_R(1.0) - damping;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    /* kept in [0, 1) <=> damping in [0, 1] and not so small that 1 - damping rounds to 1 (no change) */
-    if (MOTUS__LIKELY(motus__real_bits(kept) < motus__real_bits(MOTUS_R(1.0)) && particle->inverse_mass != 0)) {
+    /* 1/m > 0 as the step tests it, so that after a step the compiler drops this test */
+    if (MOTUS__LIKELY(motus__damping_bits(damping) && motus__positive_bits(particle->inverse_mass))) {
+        const motus_real kept = MOTUS_R(1.0) - damping;
         /* each component a load of its own: Clang -O3 -march=native otherwise loads the two as one pair right
            after the step's two stores, which the CPU cannot forward (a stall a particle: 2.2x slower) */
         motus_real x = particle->velocity.x, y = particle->velocity.y;
@@ -1112,6 +1150,13 @@ MOTUS_DEF motus_result motus_particle_damp_per_step(motus_particle *particle, mo
         MOTUS__OPAQUE(y);
         x = x * kept;
         y = y * kept;
+        if (MOTUS__LIKELY(motus__moving_bits(x) && motus__moving_bits(y))) {
+            motus_particle *out = particle;
+            MOTUS__OPAQUE_POINTER(out);
+            out->velocity.x = x;
+            particle->velocity.y = y;
+            return MOTUS_OK;
+        }
         mx = motus__magnitude_bits(x);
         my = motus__magnitude_bits(y);
         /* finite after damping <=> finite before (kept < 1, and Inf*0 is NaN) */
@@ -1143,7 +1188,7 @@ MOTUS_DEF motus_result motus_particle_bounce(motus_particle *particle, motus_vec
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
     if (MOTUS__LIKELY(motus__unit_bits(restitution) && motus__inside(particle->position.x, bounds_min.x, bounds_max.x) &&
                       motus__inside(particle->position.y, bounds_min.y, bounds_max.y) &&
-                      motus_real_is_finite(particle->velocity.x) && motus_real_is_finite(particle->velocity.y)))
+                      motus_real_is_finite(particle->velocity.x + particle->velocity.y)))
         return MOTUS_OK; /* nothing to bounce off, nothing to report */
     return motus__particle_bounce_rare(particle, bounds_min.x, bounds_min.y, bounds_max.x, bounds_max.y, restitution);
 }
@@ -1188,7 +1233,7 @@ MOTUS_DEF motus_result motus_particle3_add_force(motus_particle3 *particle, motu
     x = x + force.x;
     y = y + force.y;
     z = z + force.z;
-    if (MOTUS__LIKELY(motus_real_is_finite(x) && motus_real_is_finite(y) && motus_real_is_finite(z))) {
+    if (MOTUS__LIKELY(motus_real_is_finite(x + y + z))) {
         particle->force.x = x;
         particle->force.y = y;
         particle->force.z = z;
@@ -1218,14 +1263,16 @@ MOTUS_DEF motus_result motus_particle3_step(motus_particle3 *particle, motus_rea
     xx = particle->position.x + MOTUS__ROUND(vx * dt);
     xy = particle->position.y + MOTUS__ROUND(vy * dt);
     xz = particle->position.z + MOTUS__ROUND(vz * dt);
-    if (MOTUS__LIKELY(dt > 0 && im > 0 && motus_real_is_finite(xx) && motus_real_is_finite(xy) &&
-                      motus_real_is_finite(xz))) {
-        particle->velocity.x = vx;
+    if (MOTUS__LIKELY(motus__positive_bits(dt) && motus__positive_bits(particle->inverse_mass) &&
+                      motus_real_is_finite(xx + xy + xz))) {
+        motus_particle3 *out = particle;
+        MOTUS__OPAQUE_POINTER(out);
+        out->velocity.x = vx;
         particle->velocity.y = vy;
-        particle->velocity.z = vz;
-        particle->position.x = xx;
+        out->velocity.z = vz;
+        out->position.x = xx;
         particle->position.y = xy;
-        particle->position.z = xz;
+        out->position.z = xz;
         return MOTUS_OK;
     }
     return motus__particle3_step_rare(particle, dt);
@@ -1236,9 +1283,9 @@ MOTUS_DEF motus_result motus_particle3_step_compensated(motus_particle3 *particl
                                    carry, dt, 3);
 }
 MOTUS_DEF motus_result motus_particle3_damp_per_step(motus_particle3 *particle, motus_real damping) {
-    const motus_real kept = MOTUS_R(1.0) - damping;
     if (!particle) return MOTUS_ERROR_NULL_POINTER;
-    if (MOTUS__LIKELY(motus__real_bits(kept) < motus__real_bits(MOTUS_R(1.0)) && particle->inverse_mass != 0)) {
+    if (MOTUS__LIKELY(motus__damping_bits(damping) && motus__positive_bits(particle->inverse_mass))) {
+        const motus_real kept = MOTUS_R(1.0) - damping;
         motus_real x = particle->velocity.x, y = particle->velocity.y, z = particle->velocity.z;
         motus__bits mx, my, mz;
         MOTUS__OPAQUE(x); /* as in motus_particle_damp_per_step */
@@ -1247,6 +1294,14 @@ MOTUS_DEF motus_result motus_particle3_damp_per_step(motus_particle3 *particle, 
         x = x * kept;
         y = y * kept;
         z = z * kept;
+        if (MOTUS__LIKELY(motus__moving_bits(x) && motus__moving_bits(y) && motus__moving_bits(z))) {
+            motus_particle3 *out = particle;
+            MOTUS__OPAQUE_POINTER(out);
+            out->velocity.x = x;
+            particle->velocity.y = y;
+            out->velocity.z = z;
+            return MOTUS_OK;
+        }
         mx = motus__magnitude_bits(x);
         my = motus__magnitude_bits(y);
         mz = motus__magnitude_bits(z);
@@ -1272,8 +1327,7 @@ MOTUS_DEF motus_result motus_particle3_bounce(motus_particle3 *particle, motus_v
     if (MOTUS__LIKELY(motus__unit_bits(restitution) && motus__inside(particle->position.x, bounds_min.x, bounds_max.x) &&
                       motus__inside(particle->position.y, bounds_min.y, bounds_max.y) &&
                       motus__inside(particle->position.z, bounds_min.z, bounds_max.z) &&
-                      motus_real_is_finite(particle->velocity.x) && motus_real_is_finite(particle->velocity.y) &&
-                      motus_real_is_finite(particle->velocity.z)))
+                      motus_real_is_finite(particle->velocity.x + particle->velocity.y + particle->velocity.z)))
         return MOTUS_OK;
     return motus__particle3_bounce_rare(particle, bounds_min.x, bounds_min.y, bounds_min.z, bounds_max.x, bounds_max.y,
                                         bounds_max.z, restitution);

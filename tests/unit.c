@@ -672,6 +672,52 @@ TEST(immovable_particle_ignores_forces_and_damping) {
 /* What >>conventions says of an immovable particle at a wall: it bounces off as any particle does (its
    velocity reversed and scaled by the restitution), through the particle call and through motus_step, with
    contacts off and on; with restitution 0 it stops there. */
+/* The common paths test one sum of the components for finiteness (x + y is finite only if both are). A
+   sum that overflows while every component is finite must still be taken as fine, with the same result as
+   component by component; and a damping too small for the common path still damps. */
+TEST(textbook_calls_accept_components_whose_sum_overflows) {
+    const motus_real big = REAL_MAX * MOTUS_R(0.75); /* big + big overflows; big alone does not */
+    motus_particle p;
+    motus_particle3 q;
+    motus_real kept;
+    /* add_force: the new force sums to more than the largest real */
+    ENSURE_EQ_INT(motus_particle_init(&p, motus_v2(0, 0), 1), MOTUS_OK);
+    ENSURE_EQ_INT(motus_particle_add_force(&p, motus_v2(big, big)), MOTUS_OK);
+    ENSURE(p.force.x == big && p.force.y == big);
+    ENSURE_EQ_INT(motus_particle3_init(&q, motus_v3(0, 0, 0), 1), MOTUS_OK);
+    ENSURE_EQ_INT(motus_particle3_add_force(&q, motus_v3(big, big, 1)), MOTUS_OK);
+    ENSURE(q.force.x == big && q.force.y == big && q.force.z == 1);
+    /* step: the new positions sum to more than the largest real */
+    ENSURE_EQ_INT(motus_particle_init(&p, motus_v2(big, big), 1), MOTUS_OK);
+    p.velocity = motus_v2(1, -1);
+    ENSURE_EQ_INT(motus_particle_step(&p, MOTUS_R(0.5)), MOTUS_OK);
+    ENSURE(p.position.x == big + MOTUS_R(0.5) && p.position.y == big - MOTUS_R(0.5));
+    ENSURE(p.velocity.x == 1 && p.velocity.y == -1);
+    ENSURE_EQ_INT(motus_particle3_init(&q, motus_v3(big, 0, big), 1), MOTUS_OK);
+    ENSURE_EQ_INT(motus_particle3_step(&q, MOTUS_R(0.5)), MOTUS_OK);
+    ENSURE(q.position.x == big && q.position.y == 0 && q.position.z == big);
+    /* bounce: the velocities sum to more than the largest real, inside the walls (nothing to do) */
+    ENSURE_EQ_INT(motus_particle_init(&p, motus_v2(1, 1), 1), MOTUS_OK);
+    p.velocity = motus_v2(big, big);
+    ENSURE_EQ_INT(motus_particle_bounce(&p, motus_v2(0, 0), motus_v2(2, 2), MOTUS_R(0.5)), MOTUS_OK);
+    ENSURE(p.velocity.x == big && p.velocity.y == big && p.position.x == 1);
+    ENSURE_EQ_INT(motus_particle3_init(&q, motus_v3(1, 1, 1), 1), MOTUS_OK);
+    q.velocity = motus_v3(big, 0, big);
+    ENSURE_EQ_INT(motus_particle3_bounce(&q, motus_v3(0, 0, 0), motus_v3(2, 2, 2), MOTUS_R(0.5)), MOTUS_OK);
+    ENSURE(q.velocity.x == big && q.velocity.z == big);
+    /* damp: 1e-7 is below the common path's 1e-6; 1 - 1e-7 still rounds below 1, so it damps */
+    kept = MOTUS_R(1.0) - (motus_real)1e-7;
+    ENSURE(kept < 1);
+    ENSURE_EQ_INT(motus_particle_init(&p, motus_v2(0, 0), 1), MOTUS_OK);
+    p.velocity = motus_v2(3, -5);
+    ENSURE_EQ_INT(motus_particle_damp_per_step(&p, (motus_real)1e-7), MOTUS_OK);
+    ENSURE(p.velocity.x == 3 * kept && p.velocity.y == -5 * kept);
+    ENSURE_EQ_INT(motus_particle3_init(&q, motus_v3(0, 0, 0), 1), MOTUS_OK);
+    q.velocity = motus_v3(3, -5, 7);
+    ENSURE_EQ_INT(motus_particle3_damp_per_step(&q, (motus_real)1e-7), MOTUS_OK);
+    ENSURE(q.velocity.x == 3 * kept && q.velocity.y == -5 * kept && q.velocity.z == 7 * kept);
+}
+
 TEST(immovable_particle_bounces_off_a_wall) {
     int contacts, r;
     for (contacts = 0; contacts <= 1; ++contacts)
@@ -1376,6 +1422,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(bounce_with_an_infinite_box_never_writes_infinity),
     TEST_CASE(immovable_particle_ignores_forces_and_damping),
     TEST_CASE(immovable_particle_bounces_off_a_wall),
+    TEST_CASE(textbook_calls_accept_components_whose_sum_overflows),
     TEST_CASE(immovable_particles_drift_in_every_method),
     TEST_CASE(state_of_particles_points_at_the_fields),
     TEST_CASE(textbook_calls_match_the_full_functions),
