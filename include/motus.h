@@ -944,7 +944,8 @@ MOTUS_DEF motus__bits motus__magnitude_bits(motus_real x) { return motus__real_b
 /* x in [+0, 1], read from its bits (a -0 or a NaN is not: the rare path takes those). */
 MOTUS_DEF int motus__unit_bits(motus_real x) { return motus__real_bits(x) <= motus__real_bits(MOTUS_R(1.0)); }
 /* x in (0, largest finite], read from its bits: one unsigned compare (+0, -0, negatives, Inf and NaN are
-   not). On an argument the same for every particle (dt, 1/m read twice) the compiler computes it once. */
+   not). dt is the same for every particle, so the caller's loop computes most of it once; and the step and
+   damping test 1/m with it alike, so that after a step the compiler drops damping's test. */
 MOTUS_DEF int motus__positive_bits(motus_real x) {
     return (motus__bits)(motus__real_bits(x) - 1u) < (motus__bits)(MOTUS__EXPONENT_MASK - 1u);
 }
@@ -976,9 +977,9 @@ MOTUS__RARE motus_result motus__add_force_error(motus_vec3 old, motus_vec3 force
     return (motus__finite_in(force, dims) & motus__finite_in(old, dims)) ? MOTUS_ERROR_OVERFLOW
                                                                          : MOTUS_ERROR_NOT_FINITE;
 }
-/* The rare paths: the full functions on the particle. The 2D ones run the 3D code on a copy with z = 0. */
-/* The common path tests the sum of the components: here a sum that overflowed while each component is
-   finite is stored. */
+/* The rare paths: the full functions on the particle. The 2D ones run the 3D code on a copy with z = 0.
+   add_force's common path tests the sum of the components: a sum that overflowed while each component is
+   finite comes here, and is stored. */
 MOTUS__RARE motus_result motus__particle3_add_force_rare(motus_particle3 *particle, motus_real x, motus_real y,
                                                          motus_real z) {
     const motus_vec3 sum = motus_vec3_add(particle->force, motus_v3(x, y, z));
