@@ -57,8 +57,9 @@
    presses changed something, how many resets and steps since the last, how many particles are inside the
    window (all of them: they bounce) and how many are drawn whole inside it (their disc within 0.01 px of the
    window), their mean position and velocity and root-mean-square speed, and the overlaps between the balls
-   as drawn (found by motus_find_contacts whether collisions are on or not): how many pairs overlap, the
-   largest overlap in px and as a share of the smaller radius of its pair, e.g.
+   as drawn (found by motus_find_contacts whether collisions are on or not): how many pairs are in contact
+   (overlapping or within 1% of touching), the largest overlap in px and as a share of the smaller radius of
+   its pair, e.g.
      frames=300 particles=5000 scene=gravity|bounds|state.force|state.inverse_mass method=semi_implicit_euler
      gravity=1 wind=0 random=1 damping=0 collisions=0 tether=0 tether_x=400.0 tether_y=300.0 toggles=0
      resets=0 steps=300 inside=5000 whole=5000
@@ -526,8 +527,8 @@ typedef struct overlaps {
     double largest_share; /* of the smaller radius of the pair */
 } overlaps;
 
-/* The balls as drawn that overlap now, by motus_find_contacts (the step's broadphase; the scene and state as
-   with collisions on, whatever the toggles say). */
+/* The balls as drawn that are in contact now (overlapping or within 1% of touching), by motus_find_contacts
+   (the step's broadphase; the scene and state as with collisions on, whatever the toggles say). */
 static overlaps find_overlaps(sandbox *s) {
     overlaps o = {-1, 0, 0};
     toggles colliding = s->on;

@@ -507,7 +507,9 @@ MOTUS_API motus_result motus_scene_check(const motus_scene *scene, int dimension
    inverse mass. report (may be NULL) says which particle, field and component. */
 MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_state *state, int first, int count,
                                          motus_check_report *report);
-/* The pairs of particles that overlap now (distance < the sum of their radii), each once with a < b, in
+/* The pairs of particles in contact now: overlapping or within 1% of the sum of their radii of touching
+   (distance < 1.01 * (r_a + r_b), the solver's own tolerance: after a step pushes an overlap out, two balls
+   that collided or rest on each other sit at exactly r_a + r_b, and they are listed), each once with a < b, in
    the order the broadphase finds them (the particles from the bottom up, each with its neighbours in its
    half of the cells around it; the solver then sorts them by their upper particle): *found gets their
    number, the first `capacity` are written to pairs. scratch as for motus_step with contacts on. The
@@ -629,8 +631,8 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      approach speed that overflows (2e38 m/s head-on in float) bounces as at any speed. An impulse (a
      momentum) past the largest real is not scaled: it is reported (MOTUS_ERROR_NOT_FINITE, or
      MOTUS_ERROR_OVERFLOW with MOTUS_CHECKED), e.g. 1e36 m/s head-on between 1,000 kg balls in float.
-   - Cost per substep: O(N + pairs * iterations); motus_find_contacts gives the overlapping pairs for game
-     logic. Memory: the scratch (motus_scratch_size), and about 19 KB of stack for the pass's job (the
+   - Cost per substep: O(N + pairs * iterations); motus_find_contacts gives the pairs in contact (within
+     1% of touching, as the solver counts them) for game logic. Memory: the scratch (motus_scratch_size), and about 19 KB of stack for the pass's job (the
      tasks' tables; mind it on a fiber's small stack).
    - THREADS: with scene.parallel_for set, motus_step hands it the method's pass, the grid's scans and the
      pair search in tasks of 2,048 particles or more (each task lists its pairs into its own part of the
@@ -4283,7 +4285,8 @@ MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus
         const size_t room = total < (size_t)capacity ? (size_t)capacity - total : 0;
         const size_t from = total;
         size_t k;
-        total += motus__pairs_of(&job, job.order[i], MOTUS__PAIRS_RECORD, 1, room > 0 ? pairs + total : NULL, NULL, room);
+        total += motus__pairs_of(&job, job.order[i], MOTUS__PAIRS_RECORD, 1 + MOTUS__TOUCH, room > 0 ? pairs + total : NULL,
+                                 NULL, room);
         if (total > (size_t)INT_MAX) return MOTUS_ERROR_INVALID_COUNT;
         for (k = from; k < total && k < (size_t)capacity; ++k)
             if (pairs[k].a > pairs[k].b) {

@@ -206,13 +206,13 @@ TEST(newtons_cradle) {
     }
 }
 
-/* The broadphase finds exactly the pairs of a brute-force search (distance < r_a + r_b, computed as the
-   header does, in units scaled by a power of two), on random scenes, clusters, particles on cell borders,
-   mixed radii and far from the origin. */
+/* The broadphase finds exactly the pairs of a brute-force search (distance < 1.01 (r_a + r_b): in contact,
+   as the solver counts it), on random scenes, clusters, particles on cell borders, mixed radii and far from
+   the origin. */
 static int brute_force_overlaps(int a, int b) {
     const motus_real ra = W.state.radius ? W.radius[a] : W.scene.contacts.radius;
     const motus_real rb = W.state.radius ? W.radius[b] : W.scene.contacts.radius;
-    double d2 = 0, sum = (double)ra + (double)rb;
+    double d2 = 0, sum = ((double)ra + (double)rb) * (double)(MOTUS_R(1.0) + MOTUS_R(0.01));
     int d;
     for (d = 0; d < W.state.dimensions; ++d) {
         const double u = (double)W.x[d][b] - (double)W.x[d][a];
@@ -364,6 +364,58 @@ TEST(stack_of_ten_rests) {
             ENSURE_NEAR(W.x[1][i], 0.5 + i, 32 * EPS * 10);
             ENSURE_NEAR(W.v[1][i], 0, 1e-6);
         }
+    }
+}
+
+/* motus_find_contacts is for game logic (a sound when two balls hit): it lists the pairs the solver
+   treats as in contact, which after a step sit at exactly r_a + r_b (the projection pushed the overlap
+   out), not only those that still overlap. Head-on, restitution 0.5: the pair is listed after the step in
+   which the velocities change, and not once the balls are apart; restitution 0: listed from then on
+   (they move together). A resting stack of ten: its 9 pairs. */
+TEST(contacts_are_listed_after_the_step_that_resolves_them) {
+    int dims, k;
+    for (dims = 2; dims <= 3; ++dims) {
+        for (k = 0; k < 2; ++k) {
+            const motus_real e = k == 0 ? MOTUS_R(0.5) : 0;
+            int s, found = -1, hit = -1, listed = 0, listed_apart = 0;
+            world_init(dims, 2, MOTUS_R(0.5));
+            W.scene.contacts.restitution = e;
+            W.x[0][0] = -2, W.x[0][1] = 2;
+            W.v[0][0] = 2, W.v[0][1] = -1;
+            for (s = 0; s < 120; ++s) {
+                const motus_real before = W.v[0][0];
+                ENSURE_EQ_INT(step(MOTUS_R(1.0) / 60), MOTUS_OK);
+                ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, sizeof W.scratch, W.pairs, 4, &found),
+                              MOTUS_OK);
+                ENSURE(found == 0 || (found == 1 && W.pairs[0].a == 0 && W.pairs[0].b == 1));
+                if (hit < 0 && W.v[0][0] != before) {
+                    hit = s;
+                    ENSURE_EQ_INT(found, 1); /* the step that resolved the collision left them touching */
+                }
+                if (found == 1) ++listed;
+                if (found == 1 && W.x[0][1] - W.x[0][0] > MOTUS_R(1.01)) ++listed_apart;
+            }
+            ENSURE(hit > 0);
+            ENSURE_EQ_INT(listed_apart, 0);
+            /* and perhaps once before the hit: a step that ends within 1% of touching, approaching */
+            if (e > 0) ENSURE(listed >= 1 && listed <= 3); /* apart at 0.75 m/s: past 1% within two frames */
+            else ENSURE(listed == 120 - hit || listed == 121 - hit);
+        }
+    }
+    for (dims = 2; dims <= 3; ++dims) {
+        int i, s, found = -1;
+        world_init(dims, 10, MOTUS_R(0.5));
+        W.scene.gravity = motus_v3(0, -10, 0);
+        W.scene.bounds_min = motus_v3(-5, 0, -5);
+        W.scene.bounds_max = motus_v3(5, (motus_real)HUGE_VAL, 5);
+        W.scene.substeps = 4;
+        for (i = 0; i < 10; ++i) W.x[1][i] = MOTUS_R(0.5) + (motus_real)i * MOTUS_R(1.05);
+        for (s = 0; s < 300; ++s) ENSURE_EQ_INT(step(MOTUS_R(1.0) / 60), MOTUS_OK);
+        ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, sizeof W.scratch, W.pairs, 64, &found),
+                      MOTUS_OK);
+        ENSURE_EQ_INT(found, 9);
+        qsort(W.pairs, (size_t)found, sizeof W.pairs[0], pair_order);
+        for (i = 0; i < found && i < 9; ++i) ENSURE(W.pairs[i].a == i && W.pairs[i].b == i + 1);
     }
 }
 
@@ -833,6 +885,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(broadphase_dense_and_hashed_list_the_same_pairs),
     TEST_CASE(ball_rests_on_the_floor),
     TEST_CASE(stack_of_ten_rests),
+    TEST_CASE(contacts_are_listed_after_the_step_that_resolves_them),
     TEST_CASE(ball_in_a_v_is_not_thrown_off),
     TEST_CASE(tall_pile_far_from_the_origin_rests),
     TEST_CASE(pile_of_2000_settles),
