@@ -249,7 +249,8 @@ typedef struct motus_particle3 {
                               "all must be finite")                                                              \
     X(MOTUS_ERROR_INVALID_MASS, "mass must be finite and > 0 with 1/mass finite; an inverse mass must be >= 0 "   \
                                 "(0 = immovable)")                                                               \
-    X(MOTUS_ERROR_INVALID_TIME_STEP, "dt must be finite and >= 0 seconds (0 steps nothing)")                     \
+    X(MOTUS_ERROR_INVALID_TIME_STEP, "dt must be finite and >= 0 seconds (0 steps nothing); a clock's fixed_dt " \
+                                     "must be > 0")                                                              \
     X(MOTUS_ERROR_INVALID_DAMPING, "damping (per step or per second) must be in [0, 1], and not both set")       \
     X(MOTUS_ERROR_INVALID_DRAG, "linear and quadratic drag must be >= 0")                                        \
     X(MOTUS_ERROR_INVALID_ATTRACTOR, "attractor strength must be >= 0")                                          \
@@ -263,7 +264,8 @@ typedef struct motus_particle3 {
     X(MOTUS_ERROR_INVALID_METHOD, "method must be one of motus_method")                                          \
     X(MOTUS_ERROR_INVALID_SUBSTEPS, "substeps must be >= 0 (0 and 1 both mean one step)")                        \
     X(MOTUS_ERROR_INVALID_DIMENSIONS, "dimensions must be 2 or 3 (0 means 2)")                                   \
-    X(MOTUS_ERROR_INVALID_COUNT, "count and first must be >= 0 and first + count within the state")              \
+    X(MOTUS_ERROR_INVALID_COUNT, "a count must be >= 0: state.count, first and count within the state, a "        \
+                                 "capacity; or too many pairs to count in an int")                               \
     X(MOTUS_ERROR_INVALID_STRIDE, "stride must be >= 0 (0 means 1: plain arrays)")                                \
     X(MOTUS_ERROR_ALIASING, "two state arrays that motus writes (position, velocity) start at the same address") \
     X(MOTUS_ERROR_SCRATCH_TOO_SMALL, "scratch too small or not aligned: give motus_scratch_size() bytes, aligned " \
@@ -277,7 +279,9 @@ typedef struct motus_particle3 {
                              "unstable on a spring at any dt (explicit Euler, midpoint)")                        \
     X(MOTUS_ERROR_INVALID_ARGUMENT, "argument out of range: a safety factor must be in (0, 1], a stable step "    \
                                     ">= 0")                                                                      \
-    X(MOTUS_ERROR_INVALID_FRAME_TIME, "frame time must be finite and >= 0 seconds; the clock was left as it was")
+    X(MOTUS_ERROR_INVALID_FRAME_TIME, "frame time must be finite and >= 0 seconds; the clock was left as it was") \
+    X(MOTUS_ERROR_INVALID_CLOCK, "clock: max_steps_per_frame must be >= 0 (0 means the default), and a clock "     \
+                                 "must be set up by motus_clock_init before it advances (a zeroed one is not)")
 
 #define MOTUS__RESULT_ENUM(name, text) name,
 typedef enum motus_result { MOTUS__RESULTS(MOTUS__RESULT_ENUM) MOTUS_RESULT_COUNT } motus_result;
@@ -1496,7 +1500,7 @@ MOTUS_DEF motus_result motus_substeps_for(motus_real dt, motus_real max_stable_d
 MOTUS_DEF motus_result motus_clock_init(motus_clock *clock, motus_real fixed_dt, int max_steps_per_frame) {
     if (!clock) return MOTUS_ERROR_NULL_POINTER;
     if (!motus__positive_finite(fixed_dt)) return MOTUS_ERROR_INVALID_TIME_STEP;
-    if (max_steps_per_frame < 0) return MOTUS_ERROR_INVALID_COUNT;
+    if (max_steps_per_frame < 0) return MOTUS_ERROR_INVALID_CLOCK;
     memset(clock, 0, sizeof *clock);
     clock->fixed_dt = fixed_dt;
     clock->max_steps_per_frame = max_steps_per_frame ? max_steps_per_frame : MOTUS_CLOCK_DEFAULT_MAX_STEPS;
@@ -1514,7 +1518,7 @@ MOTUS_DEF motus_result motus_clock_advance(motus_clock *clock, motus_real frame_
     if (!motus_real_is_finite(frame_seconds) || frame_seconds < 0) return MOTUS_ERROR_INVALID_FRAME_TIME;
     if (!motus__positive_finite(clock->fixed_dt) || clock->max_steps_per_frame <= 0 ||
         clock->accumulator > MOTUS__CLOCK_TICK_MASK)
-        return MOTUS_ERROR_INVALID_COUNT;
+        return MOTUS_ERROR_INVALID_CLOCK; /* never initialised (zeroed), or corrupted: not divided by zero */
     dt = (double)clock->fixed_dt;
     cap = (uint64_t)clock->max_steps_per_frame;
     frame_steps = (double)frame_seconds / dt;
@@ -1561,7 +1565,7 @@ MOTUS_DEF const char *motus_result_string(motus_result result) {
 MOTUS_DEF const char *motus_field_name(motus_field field) {
     static const char *const names[MOTUS_FIELD_COUNT] = {"none", "position", "velocity", "force", "inverse_mass",
                                                                   "radius"};
-    return (unsigned)field < MOTUS_FIELD_COUNT ? names[field] : NULL;
+    return (unsigned)field < MOTUS_FIELD_COUNT ? names[field] : "unknown motus_field value";
 }
 MOTUS_DEF void motus__report(motus_check_report *report, int index, motus_field field, int component) {
     if (!report) return;

@@ -53,7 +53,7 @@ TEST(init_rejects_bad_input) {
     motus_clock clock = make_clock(DT, 5), before = clock;
     int i;
     for (i = 0; i < 5; ++i) ENSURE_EQ_INT(motus_clock_init(&clock, bad_dt[i], 5), MOTUS_ERROR_INVALID_TIME_STEP);
-    ENSURE_EQ_INT(motus_clock_init(&clock, DT, -1), MOTUS_ERROR_INVALID_COUNT);
+    ENSURE_EQ_INT(motus_clock_init(&clock, DT, -1), MOTUS_ERROR_INVALID_CLOCK);
     ENSURE_CLOCK_UNCHANGED(clock, before);
     ENSURE_EQ_INT(motus_clock_init(NULL, DT, 5), MOTUS_ERROR_NULL_POINTER);
 }
@@ -222,7 +222,7 @@ TEST(bad_frame_times_are_rejected_and_change_nothing) {
     ENSURE(strcmp(motus_result_string(MOTUS_ERROR_INVALID_FRAME_TIME), motus_result_string(MOTUS_ERROR_INVALID_TIME_STEP)) != 0);
     /* A clock that was never initialised (zeroed) or got corrupted is refused, not divided by zero. */
     memset(&clock, 0, sizeof clock);
-    ENSURE_EQ_INT(motus_clock_advance(&clock, DT, &steps), MOTUS_ERROR_INVALID_COUNT);
+    ENSURE_EQ_INT(motus_clock_advance(&clock, DT, &steps), MOTUS_ERROR_INVALID_CLOCK);
     ENSURE(motus_clock_alpha(NULL) == 0 && motus_clock_time(NULL) == 0);
 }
 
