@@ -628,6 +628,9 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      particle that moves more than its radius in a substep can pass through a thin one: keep |v|*h below
      the radius (substeps).
    - Deterministic: the order depends on the data only (heights, indices, cells), never on threads.
+   - Particles at exactly one point have no line of centres: they are pushed apart along +x, and pair by
+     pair the first push sets the line for the rest, so a burst spawned at one point spreads into a row.
+     Spawn them a few % of a radius apart (random offsets) and they spread out in every direction.
    - Radii may differ by up to about 1e20 in float (1e150 in double): distances are formed in units of the
      largest radius, and beyond that the squared distances of the smallest pairs underflow (they are then
      missed, or pushed apart along x). Velocities may be anything finite: where a component passes the
