@@ -2030,8 +2030,12 @@ MOTUS__KI void motus__acceleration(const motus__job *j, const motus__lane *x, co
     if (coupled && (t & MOTUS__T_COUPLED))
         MOTUS__EACH_D(if (j->stage_force[stage][d]) /* whole groups (see motus__layout) */
                           a[d] = a[d] + motus__load(j->stage_force[stage][d] + i, 1, MOTUS__LANES) * inverse_mass;);
-    if (t & MOTUS__T_MASS) /* immovable: no acceleration (a NaN still shows in the check) */
-        MOTUS__EACH_D(a[d] = motus__select(movable, a[d], zero););
+    if (t & MOTUS__T_MASS) { /* immovable: no acceleration (a NaN still shows in the check) */
+        /* -0, not +0: v + (-0)*h is v for every v, -0 included (+0 turned a -0 velocity into +0, and then
+           a position at -0 into +0 where motus_particle_step's drift x + v*dt keeps it -0) */
+        const motus__lane no_acceleration = motus__splat(-MOTUS_R(0.0));
+        MOTUS__EACH_D(a[d] = motus__select(movable, a[d], no_acceleration););
+    }
 }
 
 /* One evaluation of the forces at stage `stage`. In a pass that records that stage (coupled scenes), the

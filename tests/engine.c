@@ -447,15 +447,16 @@ TEST(particle_step_equals_zeroed_scene) {
     static motus_particle a2[N], b2[N];
     static motus_particle3 a3[N], b3[N];
     motus_scene zero;
-    int dims, i, step, negative_zeros = 0, immovable = 0;
+    int dims, i, step, negative_zeros = 0, immovable = 0, still_at_minus_zero = 0;
     memset(&zero, 0, sizeof zero);
     random_seed(77);
     for (dims = 2; dims <= 3; ++dims) {
         motus_state state = dims == 2 ? motus_state_of_particles(b2, N) : motus_state_of_particles3(b3, N);
         for (i = 0; i < N; ++i) {
+            const motus_real w = i % 5 == 2 ? 0 : random_real(0.1, 10);
             motus_vec3 x = random_vec3(-50, 50);
             motus_vec3 v = random_vec3_or_zero(-5, 5);
-            const motus_real w = i % 5 == 2 ? 0 : random_real(0.1, 10);
+            if (i == 2) x.x = x.z = v.x = v.z = -(motus_real)0; /* immovable (i % 5 == 2), at -0 drifting at -0 */
             if (dims == 2) {
                 a2[i].position = motus_v2(x.x, x.y), a2[i].velocity = motus_v2(v.x, v.y), a2[i].inverse_mass = w;
             } else {
@@ -470,9 +471,13 @@ TEST(particle_step_equals_zeroed_scene) {
                 if (dims == 2) {
                     a2[i].force = motus_v2(f.x, f.y);
                     negative_zeros += bits_of(a2[i].velocity.x) == bits_of(-(motus_real)0);
+                    still_at_minus_zero += a2[i].inverse_mass == 0 && bits_of(a2[i].position.x) == bits_of(-(motus_real)0) &&
+                                           bits_of(a2[i].velocity.x) == bits_of(-(motus_real)0);
                 } else {
                     a3[i].force = f;
                     negative_zeros += bits_of(a3[i].velocity.z) == bits_of(-(motus_real)0);
+                    still_at_minus_zero += a3[i].inverse_mass == 0 && bits_of(a3[i].position.z) == bits_of(-(motus_real)0) &&
+                                           bits_of(a3[i].velocity.z) == bits_of(-(motus_real)0);
                 }
             }
             if (dims == 2) memcpy(b2, a2, sizeof a2);
@@ -489,8 +494,9 @@ TEST(particle_step_equals_zeroed_scene) {
             }
         }
     }
-    printf("%d immovable particles, %d -0 velocity components seen\n", immovable, negative_zeros);
-    ENSURE(immovable > 0 && negative_zeros > 0); /* the cases this test is for did occur */
+    printf("%d immovable particles, %d -0 velocity components seen, %d steps of an immovable one at x = -0, "
+           "v = -0\n", immovable, negative_zeros, still_at_minus_zero);
+    ENSURE(immovable > 0 && negative_zeros > 0 && still_at_minus_zero > 0); /* the cases this test is for did occur */
 }
 
 /* motus_particle_step, then motus_particle_bounce, then motus_particle_damp_per_step (per_second) equal a
