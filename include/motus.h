@@ -522,7 +522,9 @@ MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_s
 MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus_state *state, void *scratch,
                                            size_t scratch_bytes, motus_contact_pair *pairs, int capacity, int *found);
 /* The largest dt the scene's springs and drags allow for its method (Gershgorin bound, see >>methods);
-   +Inf when nothing limits it. scratch as for motus_step. */
+   +Inf when nothing limits it. scratch as for motus_step. MOTUS_ERROR_OVERFLOW (and *max_dt untouched)
+   where w^2 = k*(1/m), summed over a particle's springs, or the damping rate passes the largest real
+   (float: 3.4e38/s^2, a dt below 1e-19 s); a large drag or speed alone is scaled, not refused. */
 MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const motus_state *state,
                                                  motus_real *max_dt, void *scratch, size_t scratch_bytes);
 
@@ -1424,16 +1426,24 @@ MOTUS_DEF motus_real motus_method_stability_limit(motus_method method) {
     if ((unsigned)method >= MOTUS_METHOD_COUNT) return -1;
     return limits[method] < 0 ? (motus_real)HUGE_VAL : limits[method];
 }
-/* limit/w_eff (see >>methods); +Inf when nothing limits; 0 when no step is stable. */
-MOTUS_DEF motus_real motus__stable_dt(motus_method method, motus_real omega_squared, motus_real decay_rate) {
+/* limit/w_eff (see >>methods), from w^2 and half the decay rate (both finite, >= 0); +Inf when nothing
+   limits; 0 when no step is stable. Where (alpha*c/2)^2 + w^2 overflows, the root is formed in units of
+   the larger of alpha*c/2 and w, so that a representable dt is not lost to it (a linear drag of 1e20/s in
+   float: 2e-20 s, not 0). */
+MOTUS_DEF motus_real motus__stable_dt(motus_method method, motus_real omega_squared, motus_real half_decay) {
     const motus_real limit = motus_method_stability_limit(method);
-    motus_real alpha = 1, half;
-    if (!motus_real_is_finite(limit) || (omega_squared == 0 && decay_rate == 0)) return (motus_real)HUGE_VAL;
-    if (limit == 0) return omega_squared > 0 ? 0 : 2 / decay_rate;
+    motus_real alpha = 1, half, sum, omega, larger;
+    if (!motus_real_is_finite(limit) || (omega_squared == 0 && half_decay == 0)) return (motus_real)HUGE_VAL;
+    if (limit == 0) return omega_squared > 0 ? 0 : 1 / half_decay;
     if (method == MOTUS_RK4) alpha = (motus_real)(2.8284271247461900976 / 2.7852935634050);
     if (method == MOTUS_FOREST_RUTH) alpha = 2;
-    half = MOTUS_R(0.5) * alpha * decay_rate;
-    return limit / (half + MOTUS_SQRT(MOTUS__ROUND(half * half) + omega_squared));
+    half = alpha * half_decay;
+    sum = MOTUS__ROUND(half * half) + omega_squared;
+    if (motus_real_is_finite(sum)) return limit / (half + MOTUS_SQRT(sum));
+    omega = MOTUS_SQRT(omega_squared);
+    larger = half > omega ? half : omega;
+    half = half / larger, omega = omega / larger;
+    return limit / larger / (half + MOTUS_SQRT(MOTUS__ROUND(half * half) + MOTUS__ROUND(omega * omega)));
 }
 /* The largest dt at which `method` keeps an undamped spring of `stiffness` (N/m) on `mass` (kg) from
    growing: limit*sqrt(mass/stiffness). No safety margin. 0 for explicit Euler and midpoint, +Inf for
@@ -4311,7 +4321,7 @@ MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus
 
 MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const motus_state *state,
                                                  motus_real *max_dt, void *scratch, size_t scratch_bytes) {
-    motus_real omega_squared = 0, spring_decay = 0, fastest = 0, decay, *sums = (motus_real *)scratch;
+    motus_real omega_squared = 0, spring_decay = 0, fastest = 0, half_decay, *sums = (motus_real *)scratch;
     motus_result result;
     ptrdiff_t stride;
     int dims = 2, i, d, k, count;
@@ -4335,14 +4345,23 @@ MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const
     }
     if (scene->quadratic_drag != 0)
         for (i = 0; i < count; ++i) {
-            motus_real speed2 = 0, speed;
+            motus_real speed2 = 0, speed, largest = 0;
             for (d = 0; d < dims; ++d) {
                 const motus_real v = state->velocity[d][(ptrdiff_t)i * stride];
                 if (!motus_real_is_finite(v)) return MOTUS_ERROR_NOT_FINITE;
                 speed2 += v * v;
+                if ((v < 0 ? -v : v) > largest) largest = v < 0 ? -v : v;
             }
             speed = MOTUS_SQRT(speed2);
-            if (!motus_real_is_finite(speed)) return MOTUS_ERROR_OVERFLOW;
+            if (!motus_real_is_finite(speed)) { /* |v|^2 overflowed: |v| in units of its largest component */
+                speed2 = 0;
+                for (d = 0; d < dims; ++d) {
+                    const motus_real u = state->velocity[d][(ptrdiff_t)i * stride] / largest;
+                    speed2 += u * u;
+                }
+                speed = largest * MOTUS_SQRT(speed2);
+                if (!motus_real_is_finite(speed)) return MOTUS_ERROR_OVERFLOW; /* |v| itself */
+            }
             if (speed > fastest) fastest = speed;
         }
     if (scene->spring_count > 0 || scene->tether_stiffness != 0) {
@@ -4369,9 +4388,13 @@ MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const
         }
 #undef MOTUS__W
     }
-    /* quadratic drag's rate at the fastest speed is 2*c*|v|; c*|v| first, as (2*c)*0 would be Inf*0 = NaN */
-    decay = scene->linear_drag + 2 * (scene->quadratic_drag * fastest) + spring_decay;
-    *max_dt = motus__stable_dt(scene->method, omega_squared, decay);
+    /* Half the decay rate: quadratic drag's rate at the fastest speed is 2*c*|v|, so its half is c*|v| (the
+       halves are exact: the same bits as halving the sum, without its overflow). */
+    half_decay = MOTUS_R(0.5) * scene->linear_drag + scene->quadratic_drag * fastest + MOTUS_R(0.5) * spring_decay;
+    /* w^2 (a row's k*(1/m) summed) or the decay rate beyond the largest real: refused, not answered with a
+       dt of 0 (a tether of 1e30 N/m on 1e-10 kg in float); the dt it stands for is below 1e-19 s. */
+    if (!motus_real_is_finite(omega_squared) || !motus_real_is_finite(half_decay)) return MOTUS_ERROR_OVERFLOW;
+    *max_dt = motus__stable_dt(scene->method, omega_squared, half_decay);
     return MOTUS_OK;
 }
 

@@ -491,6 +491,42 @@ TEST(scene_max_stable_dt_counts_the_tether) {
     }
 }
 
+/* Where an intermediate overflows but the dt does not: a drag or a speed so large that (c/2)^2 or |v|^2
+   passes the largest real gives its dt (2/(2*c/2) = 2/c for semi-implicit Euler alone, from the decay rate
+   alone), not 0 (the answer was 0 with MOTUS_OK, then MOTUS_ERROR_TOO_STIFF from motus_substeps_for for any
+   dt). Where w^2 = k*(1/m) itself passes it, MOTUS_ERROR_OVERFLOW and *max_dt untouched, never a dt of 0. */
+TEST(scene_max_stable_dt_scales_what_overflows) {
+#ifdef MOTUS_DOUBLE
+    const motus_real big = (motus_real)1e160, tiny = (motus_real)1e-300, stiff = (motus_real)1e300;
+#else
+    const motus_real big = (motus_real)1e20, tiny = (motus_real)1e-30, stiff = (motus_real)1e30;
+#endif
+    chain c;
+    motus_real dt = 42;
+    chain_init(&c, MOTUS_SEMI_IMPLICIT_EULER, 3, 1);
+    c.scene.spring_count = 0;
+    /* linear drag alone: decay rate c, dt = 2/c */
+    c.scene.linear_drag = big;
+    ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &dt, NULL, 0), MOTUS_OK);
+    ENSURE_NEAR(dt, 2 / (double)big, 4 * EPS * (2 / (double)big));
+    /* quadratic drag at a speed whose square overflows: rate 2*c*|v| (|v| = big*sqrt(2)) */
+    c.scene.linear_drag = 0;
+    c.scene.quadratic_drag = tiny;
+    c.v[0][1] = big, c.v[1][1] = -big;
+    ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &dt, NULL, 0), MOTUS_OK);
+    {
+        const double expected = 2 / (2 * (double)tiny * (double)big * sqrt(2.0));
+        ENSURE_NEAR(dt, expected, 8 * EPS * expected);
+    }
+    /* w^2 past the largest real: refused, dt untouched */
+    c.scene.quadratic_drag = 0;
+    c.scene.tether_stiffness = stiff;
+    c.inverse_mass[1] = c.inverse_mass[2] = stiff;
+    dt = 42;
+    ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &dt, NULL, 0), MOTUS_ERROR_OVERFLOW);
+    ENSURE(dt == 42);
+}
+
 TEST(scene_max_stable_dt_rejects_bad_input) {
     chain c, before;
     motus_real dt = 42, scratch[4];
@@ -1109,6 +1145,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(substeps_for_rejects_bad_input),
     TEST_CASE(scene_max_stable_dt_bounds_the_springs),
     TEST_CASE(scene_max_stable_dt_counts_the_tether),
+    TEST_CASE(scene_max_stable_dt_scales_what_overflows),
     TEST_CASE(scene_max_stable_dt_rejects_bad_input),
     TEST_CASE(substepping_keeps_a_stiff_spring_bounded),
     TEST_CASE(substepping_refuses_what_it_cannot_keep_stable),
