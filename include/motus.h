@@ -641,8 +641,8 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      momentum) past the largest real is not scaled: it is reported (MOTUS_ERROR_NOT_FINITE, or
      MOTUS_ERROR_OVERFLOW with MOTUS_CHECKED), e.g. 1e36 m/s head-on between 1,000 kg balls in float.
    - Cost per substep: O(N + pairs * iterations); motus_find_contacts gives the pairs in contact (within
-     1% of touching, as the solver counts them) for game logic. Memory: the scratch (motus_scratch_size), and about 19 KB of stack for the pass's job (the
-     tasks' tables; mind it on a fiber's small stack).
+     1% of touching, as the solver counts them) for game logic. Memory: the scratch (motus_scratch_size),
+     and about 19 KB of stack for the pass's job (the tasks' tables; mind it on a fiber's small stack).
    - THREADS: with scene.parallel_for set, motus_step hands it the method's pass, the grid's scans and the
      pair search in tasks of 2,048 particles or more (each task lists its pairs into its own part of the
      list, and a stable sort joins them as one thread would have: the same bits as without parallel_for),
@@ -4306,8 +4306,8 @@ MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus
         const size_t room = total < (size_t)capacity ? (size_t)capacity - total : 0;
         const size_t from = total;
         size_t k;
-        total += motus__pairs_of(&job, job.order[i], MOTUS__PAIRS_RECORD, 1 + MOTUS__TOUCH, room > 0 ? pairs + total : NULL,
-                                 NULL, room);
+        total += motus__pairs_of(&job, job.order[i], MOTUS__PAIRS_RECORD, 1 + MOTUS__TOUCH,
+                                 room > 0 ? pairs + total : NULL, NULL, room);
         if (total > (size_t)INT_MAX) return MOTUS_ERROR_INVALID_COUNT;
         for (k = from; k < total && k < (size_t)capacity; ++k)
             if (pairs[k].a > pairs[k].b) {

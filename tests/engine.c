@@ -471,12 +471,14 @@ TEST(particle_step_equals_zeroed_scene) {
                 if (dims == 2) {
                     a2[i].force = motus_v2(f.x, f.y);
                     negative_zeros += bits_of(a2[i].velocity.x) == bits_of(-(motus_real)0);
-                    still_at_minus_zero += a2[i].inverse_mass == 0 && bits_of(a2[i].position.x) == bits_of(-(motus_real)0) &&
+                    still_at_minus_zero += a2[i].inverse_mass == 0 &&
+                                           bits_of(a2[i].position.x) == bits_of(-(motus_real)0) &&
                                            bits_of(a2[i].velocity.x) == bits_of(-(motus_real)0);
                 } else {
                     a3[i].force = f;
                     negative_zeros += bits_of(a3[i].velocity.z) == bits_of(-(motus_real)0);
-                    still_at_minus_zero += a3[i].inverse_mass == 0 && bits_of(a3[i].position.z) == bits_of(-(motus_real)0) &&
+                    still_at_minus_zero += a3[i].inverse_mass == 0 &&
+                                           bits_of(a3[i].position.z) == bits_of(-(motus_real)0) &&
                                            bits_of(a3[i].velocity.z) == bits_of(-(motus_real)0);
                 }
             }
