@@ -3533,14 +3533,16 @@ MOTUS__KI int motus__overlap_in(const motus__contact_job *j, int dims, int a, in
 }
 
 /* |t| from t2 = t.t, or, where t2 overflowed, from t over its largest component (a sliding speed of 1e19
-   m/s in float is representable; its square is not, and friction was dropped). */
-static motus_real motus__length_scaled(const motus_real *t, motus_real t2, int dims) {
+   m/s in float is representable; its square is not, and friction was dropped). t has 3 components, those
+   past the scene's dimensions 0 (which add nothing); a loop over all 3 also spares gcc -mavx512f -O2 a
+   false "t may be used uninitialized". */
+static motus_real motus__length_scaled(const motus_real t[3], motus_real t2) {
     motus_real largest = 0, sum = 0;
     int d;
     if (t2 <= (motus_real)MOTUS__REAL_MAX) return MOTUS_SQRT(t2);
-    for (d = 0; d < dims; ++d) largest = (t[d] < 0 ? -t[d] : t[d]) > largest ? (t[d] < 0 ? -t[d] : t[d]) : largest;
+    for (d = 0; d < 3; ++d) largest = (t[d] < 0 ? -t[d] : t[d]) > largest ? (t[d] < 0 ? -t[d] : t[d]) : largest;
     if (!(largest > 0) || !(largest <= (motus_real)MOTUS__REAL_MAX)) return t2; /* NaN or Inf: as it was */
-    for (d = 0; d < dims; ++d) sum += (t[d] / largest) * (t[d] / largest);
+    for (d = 0; d < 3; ++d) sum += (t[d] / largest) * (t[d] / largest);
     return largest * MOTUS_SQRT(sum);
 }
 /* In the support sweep a gap up to this is a contact (no approach allowed): 4 ulps of the pair's largest
@@ -3655,7 +3657,7 @@ MOTUS__KI void motus__pair_velocity(motus__contact_job *j, int dims, int a, int 
         for (d = 0; d < dims; ++d) rn += (j->v[d][pb] - j->v[d][pa]) * n[d];
         for (d = 0; d < dims; ++d) t[d] = (j->v[d][pb] - j->v[d][pa]) - rn * n[d], t2 += t[d] * t[d];
     }
-    tangential = motus__length_scaled(t, t2, dims);
+    tangential = motus__length_scaled(t, t2);
     if (!(tangential > 0)) return;
     friction = tangential / w; /* the impulse that stops the sliding */
     if (friction > j->friction * impulse) friction = j->friction * impulse;
@@ -3743,7 +3745,7 @@ static int motus__wall_contacts(motus__contact_job *j, int i, int action) {
             if (j->friction == 0) continue;
             for (k = 0; k < j->dims; ++k)
                 if (k != d) t[k] = j->v[k][p], t2 += t[k] * t[k];
-            tangential = motus__length_scaled(t, t2, j->dims);
+            tangential = motus__length_scaled(t, t2);
             if (!(tangential > 0)) continue;
             keep = tangential > j->friction * change ? 1 - j->friction * change / tangential : 0;
             for (k = 0; k < j->dims; ++k)
