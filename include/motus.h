@@ -1934,9 +1934,27 @@ MOTUS__KI void motus__costly_terms(const motus__job *j, const motus__lane *x, co
     const motus__lane zero = motus__splat(0);
     int d;
     if (t & MOTUS__T_QUADRATIC_DRAG) {
-        motus__lane speed2 = v[0] * v[0] + v[1] * v[1], drag;
+        motus__lane speed2 = v[0] * v[0] + v[1] * v[1], speed, drag;
+        motus__mask overflowed;
         if (dims == 3) speed2 = speed2 + v[2] * v[2];
-        drag = j->quadratic_drag * motus__sqrt(speed2);
+        speed = motus__sqrt(speed2);
+        /* |v|^2 overflows from |v| = 1.8e19 m/s in float, where c*|v|*v may not (a small c): there |v| is
+           s*sqrt(sum (v_d/s)^2) with s = max|v_d|, as for the attractor below. Only the lanes that overflowed
+           take it (a NaN or infinite v is not one: it stays as it was), so the other bits do not change. */
+        overflowed = (motus__mask)(speed2 > j->largest) & (motus__mask)(v[0] - v[0] == zero) &
+                     (motus__mask)(v[1] - v[1] == zero);
+        if (dims == 3) overflowed = overflowed & (motus__mask)(v[2] - v[2] == zero);
+        if (motus__any(overflowed)) {
+            motus__lane largest = motus__select(v[0] < zero, -v[0], v[0]), sum = zero;
+            for (d = 1; d < dims; ++d) {
+                const motus__lane m = motus__select(v[d] < zero, -v[d], v[d]);
+                largest = motus__select(m > largest, m, largest);
+            }
+            largest = motus__select(overflowed, largest, motus__splat(1)); /* > 0 where it is used */
+            for (d = 0; d < dims; ++d) sum = sum + (v[d] / largest) * (v[d] / largest);
+            speed = motus__select(overflowed, largest * motus__sqrt(sum), speed);
+        }
+        drag = j->quadratic_drag * speed;
         for (d = 0; d < dims; ++d) a[d] = a[d] - v[d] * drag;
     }
     if (t & MOTUS__T_ATTRACTOR) {
@@ -1959,6 +1977,16 @@ MOTUS__KI void motus__costly_terms(const motus__job *j, const motus__lane *x, co
             u2 = u2 + r[d] * r[d];
         }
         pull = j->attractor_strength * inverse_s * inverse_s / (u2 * motus__sqrt(u2));
+        /* mu*(1/s)^2 overflows for mu near the largest real and s < 1 where the pull may not (|u|^3 up to
+           5.2 divides it): there (mu/|u|^3)*(1/s)*(1/s), each product no larger than the pull. The pull is the
+           largest component of the acceleration (that of u is 1), so a pull that overflows is an acceleration
+           that does. Only those lanes: the other bits do not change. */
+        {
+            const motus__mask overflowed = (motus__mask)(pull > j->largest) & (motus__mask)(u2 - u2 == zero);
+            if (motus__any(overflowed))
+                pull = motus__select(overflowed,
+                                     j->attractor_strength / (u2 * motus__sqrt(u2)) * inverse_s * inverse_s, pull);
+        }
         pull = motus__select(at_centre, zero, pull);
         for (d = 0; d < dims; ++d) a[d] = a[d] - r[d] * pull;
     }

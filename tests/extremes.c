@@ -1,7 +1,8 @@
 /* Extremes: far from the origin, overflow near the float maximum, damping factors, subnormal speeds, and
    the adversarial classes of issue 11 item 8 (a stable dt of -0, an attractor 1e13 and 1e20 m away, the exact
    stepper at drag 1e38 over 1e20 s, a spring of 1e20 N/m at its rest length of 1e20 m, a subnormal dt split
-   in substeps, the stable dt without scratch). Built in float and in double (MOTUS_DOUBLE). The
+   in substeps, the stable dt without scratch, a quadratic drag at a speed whose square overflows, an
+   attractor whose strength is near the largest real). Built in float and in double (MOTUS_DOUBLE). The
    far-from-origin and subnormal tests print the figures they measure (run
    `motus_extremes far_from_origin_plain_step_loses_small_steps`, ...). */
 #define MOTUS_IMPLEMENTATION
@@ -592,6 +593,93 @@ TEST(tether_pull_from_far_across_is_representable) {
         }
 }
 
+TEST(quadratic_drag_at_a_speed_whose_square_overflows) {
+    /* |v| = 2*sqrt(largest) (3.7e19 m/s in float, 2.7e154 in double): |v|^2 overflows, c*|v|*v*dt does not
+       with c = 1e-3/|v| per m. Along a fixed direction the speed follows u' = -c*u^2, u(t) = u0/(1 + c*u0*t):
+       one step of 1 s slows it by a factor 1/(1 + 1e-3) to 1e-5 (semi-implicit Euler's error is 1e-6 of
+       it), MOTUS_OK, on an axis and on a diagonal, 2D and 3D, for a one-, a two- and a four-stage method.
+       Before, a = -v*inf: MOTUS_ERROR_NOT_FINITE (OVERFLOW checked) with a finite answer. */
+    static const motus_method methods[3] = {MOTUS_SEMI_IMPLICIT_EULER, MOTUS_VELOCITY_VERLET, MOTUS_RK4};
+    const double speed = 2 * sqrt((double)REAL_MAX);
+    int m, dims, diagonal;
+    for (dims = 2; dims <= 3; ++dims)
+        for (diagonal = 0; diagonal < 2; ++diagonal)
+            for (m = 0; m < 3; ++m) {
+                motus_real x[1] = {0}, y[1] = {0}, z[1] = {0}, v0[3], vx[1], vy[1], vz[1];
+                motus_scene scene;
+                motus_state state;
+                double u0 = 0, kept;
+                int d;
+                memset(&scene, 0, sizeof scene);
+                memset(&state, 0, sizeof state);
+                v0[0] = (motus_real)speed;
+                v0[1] = diagonal ? (motus_real)-speed : 0;
+                v0[2] = dims == 3 && diagonal ? (motus_real)speed : 0;
+                for (d = 0; d < dims; ++d) u0 += v0[d] != 0; /* components of the same magnitude */
+                u0 = (double)v0[0] * sqrt(u0);             /* (their squares overflow double too) */
+                scene.method = methods[m];
+                scene.quadratic_drag = (motus_real)(1e-3 / u0);
+                kept = 1 / (1 + (double)scene.quadratic_drag * u0);
+                vx[0] = v0[0], vy[0] = v0[1], vz[0] = v0[2];
+                state.dimensions = dims;
+                state.count = 1;
+                state.position[0] = x, state.position[1] = y, state.position[2] = z;
+                state.velocity[0] = vx, state.velocity[1] = vy, state.velocity[2] = vz;
+                ENSURE_EQ_INT(motus_step(&scene, &state, 1, NULL, 0), MOTUS_OK);
+                for (d = 0; d < dims; ++d) {
+                    const motus_real got = d == 0 ? vx[0] : d == 1 ? vy[0] : vz[0];
+                    const double expected = (double)v0[d] * kept;
+                    if (expected == 0 ? got != 0 : !(fabs((double)got / expected - 1) <= 1e-5)) {
+                        fprintf(stderr, "  %s, %dD%s: v[%d] = %g, expected %g\n", method_name(methods[m]), dims,
+                                diagonal ? " diagonal" : "", d, (double)got, expected);
+                        motus_test_failures++;
+                    }
+                }
+            }
+}
+
+TEST(attractor_pull_of_a_strength_near_the_largest_real) {
+    /* mu = largest/1.2 at r = (0.9, +-0.9[, 0.9]) m: mu*(1/s)^2 overflows (s = 0.9), the pull mu/|r|^2 along
+       each axis (mu*0.9/|r|^3: 0.39*mu in 2D, 0.23*mu in 3D) does not. One step of 1e-3 s from rest with a
+       method whose first stage is the only one the velocity sees at order 0 (Euler): v = a*dt to 1e-5,
+       MOTUS_OK. Before, the pull was infinite: NOT_FINITE (OVERFLOW checked). And at r = (0.5, 0): the pull
+       mu/0.25 itself overflows, so the step still refuses it. */
+    static const motus_method methods[2] = {MOTUS_SEMI_IMPLICIT_EULER, MOTUS_EXPLICIT_EULER};
+    int m, dims;
+    for (dims = 2; dims <= 3; ++dims)
+        for (m = 0; m < 2; ++m) {
+            motus_real x[1] = {(motus_real)0.9}, y[1] = {(motus_real)-0.9}, z[1], vx[1] = {0}, vy[1] = {0},
+                       vz[1] = {0};
+            motus_scene scene;
+            motus_state state;
+            double r[3], a[3];
+            int d;
+            z[0] = dims == 3 ? (motus_real)0.9 : 0;
+            memset(&scene, 0, sizeof scene);
+            memset(&state, 0, sizeof state);
+            scene.method = methods[m];
+            scene.attractor_strength = (motus_real)(REAL_MAX / 1.2);
+            r[0] = (double)x[0], r[1] = (double)y[0], r[2] = (double)z[0];
+            pull(r, dims, (double)scene.attractor_strength, a);
+            state.dimensions = dims;
+            state.count = 1;
+            state.position[0] = x, state.position[1] = y, state.position[2] = z;
+            state.velocity[0] = vx, state.velocity[1] = vy, state.velocity[2] = vz;
+            ENSURE_EQ_INT(motus_step(&scene, &state, (motus_real)1e-3, NULL, 0), MOTUS_OK);
+            for (d = 0; d < dims; ++d) {
+                const motus_real got = d == 0 ? vx[0] : d == 1 ? vy[0] : vz[0];
+                if (!(fabs((double)got / (a[d] * 1e-3) - 1) <= 1e-5)) {
+                    fprintf(stderr, "  %s, %dD: v[%d] = %g, expected %g\n", method_name(methods[m]), dims, d,
+                            (double)got, a[d] * 1e-3);
+                    motus_test_failures++;
+                }
+            }
+            /* the pull itself past the largest real: refused (NOT_FINITE, or OVERFLOW when checked) */
+            x[0] = (motus_real)0.5, y[0] = 0, z[0] = 0, vx[0] = vy[0] = vz[0] = 0;
+            ENSURE(motus_step(&scene, &state, (motus_real)1e-3, NULL, 0) != MOTUS_OK);
+        }
+}
+
 TEST(exact_stepper_at_huge_drag_and_dt) {
     /* (d) Drag 1e38 /s over 1e20 s: u = k*h = 1e58 overflows float, and h^2/2 = 5e39 too. The particle ends
        at the terminal velocity a/k (1e-37 m/s, a normal float) after moving v0/k + a*(dt - 1/k)/k: finite,
@@ -760,6 +848,8 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(substeps_for_a_stable_dt_of_negative_zero_is_too_stiff),
     TEST_CASE(attractor_pull_far_away_is_representable),
     TEST_CASE(tether_pull_from_far_across_is_representable),
+    TEST_CASE(quadratic_drag_at_a_speed_whose_square_overflows),
+    TEST_CASE(attractor_pull_of_a_strength_near_the_largest_real),
     TEST_CASE(exact_stepper_at_huge_drag_and_dt),
     TEST_CASE(spring_of_1e20_at_its_rest_length_of_1e20),
     TEST_CASE(subnormal_dt_in_substeps_still_moves),
