@@ -348,18 +348,25 @@ TEST(ball_rests_on_the_floor) {
     }
 }
 
+/* Ten balls of radius 0.5 dropped in a column onto the floor, 5% apart, and left 5 s (300 frames of 4
+   substeps) to settle. */
+static void settle_stack_of_ten(int dims) {
+    int i, s;
+    world_init(dims, 10, MOTUS_R(0.5));
+    W.scene.gravity = motus_v3(0, -10, 0);
+    W.scene.bounds_min = motus_v3(-5, 0, -5);
+    W.scene.bounds_max = motus_v3(5, (motus_real)HUGE_VAL, 5);
+    W.scene.substeps = 4;
+    for (i = 0; i < 10; ++i) W.x[1][i] = MOTUS_R(0.5) + (motus_real)i * MOTUS_R(1.05);
+    for (s = 0; s < 300; ++s) ENSURE_EQ_INT(step(MOTUS_R(1.0) / 60), MOTUS_OK);
+}
+
 /* Ten balls stacked on the floor rest, each on the one below, velocities 0. */
 TEST(stack_of_ten_rests) {
     int dims;
     for (dims = 2; dims <= 3; ++dims) {
-        int i, s;
-        world_init(dims, 10, MOTUS_R(0.5));
-        W.scene.gravity = motus_v3(0, -10, 0);
-        W.scene.bounds_min = motus_v3(-5, 0, -5);
-        W.scene.bounds_max = motus_v3(5, (motus_real)HUGE_VAL, 5);
-        W.scene.substeps = 4;
-        for (i = 0; i < 10; ++i) W.x[1][i] = MOTUS_R(0.5) + (motus_real)i * MOTUS_R(1.05);
-        for (s = 0; s < 300; ++s) ENSURE_EQ_INT(step(MOTUS_R(1.0) / 60), MOTUS_OK);
+        int i;
+        settle_stack_of_ten(dims);
         for (i = 0; i < 10; ++i) {
             ENSURE_NEAR(W.x[1][i], 0.5 + i, 32 * EPS * 10);
             ENSURE_NEAR(W.v[1][i], 0, 1e-6);
@@ -403,14 +410,8 @@ TEST(contacts_are_listed_after_the_step_that_resolves_them) {
         }
     }
     for (dims = 2; dims <= 3; ++dims) {
-        int i, s, found = -1;
-        world_init(dims, 10, MOTUS_R(0.5));
-        W.scene.gravity = motus_v3(0, -10, 0);
-        W.scene.bounds_min = motus_v3(-5, 0, -5);
-        W.scene.bounds_max = motus_v3(5, (motus_real)HUGE_VAL, 5);
-        W.scene.substeps = 4;
-        for (i = 0; i < 10; ++i) W.x[1][i] = MOTUS_R(0.5) + (motus_real)i * MOTUS_R(1.05);
-        for (s = 0; s < 300; ++s) ENSURE_EQ_INT(step(MOTUS_R(1.0) / 60), MOTUS_OK);
+        int i, found = -1;
+        settle_stack_of_ten(dims);
         ENSURE_EQ_INT(motus_find_contacts(&W.scene, &W.state, W.scratch, sizeof W.scratch, W.pairs, 64, &found),
                       MOTUS_OK);
         ENSURE_EQ_INT(found, 9);
