@@ -503,6 +503,18 @@ TEST(substeps_for_a_stable_dt_of_negative_zero_is_too_stiff) {
     ENSURE_EQ_INT(n, 1);
 }
 
+/* One state over the caller's arrays (a particle or a few): x, y, z and vx, vy, vz, z read only in 3D. */
+static motus_state state_of(int dims, int count, motus_real *x, motus_real *y, motus_real *z, motus_real *vx,
+                            motus_real *vy, motus_real *vz) {
+    motus_state state;
+    memset(&state, 0, sizeof state);
+    state.dimensions = dims;
+    state.count = count;
+    state.position[0] = x, state.position[1] = y, state.position[2] = z;
+    state.velocity[0] = vx, state.velocity[1] = vy, state.velocity[2] = vz;
+    return state;
+}
+
 /* The acceleration of the inverse-square pull at r from the attractor, in long double. */
 static void pull(const double *r, int dims, double mu, double *a) {
     long double r2 = 0, length;
@@ -530,7 +542,6 @@ TEST(attractor_pull_far_away_is_representable) {
                     motus_state state;
                     int d;
                     memset(&scene, 0, sizeof scene);
-                    memset(&state, 0, sizeof state);
                     scene.method = methods[m];
                     scene.attractor_strength = (motus_real)mu;
                     r[0] = distances[k];
@@ -539,10 +550,7 @@ TEST(attractor_pull_far_away_is_representable) {
                     x[0] = (motus_real)r[0], y[0] = (motus_real)r[1], z[0] = (motus_real)r[2];
                     r[0] = (double)x[0], r[1] = (double)y[0], r[2] = (double)z[0]; /* what the state holds */
                     pull(r, dims, (double)scene.attractor_strength, a);
-                    state.dimensions = dims;
-                    state.count = 1;
-                    state.position[0] = x, state.position[1] = y, state.position[2] = z;
-                    state.velocity[0] = vx, state.velocity[1] = vy, state.velocity[2] = vz;
+                    state = state_of(dims, 1, x, y, z, vx, vy, vz);
                     ENSURE_EQ_INT(motus_step(&scene, &state, 1, NULL, 0), MOTUS_OK);
                     for (d = 0; d < dims; ++d) {
                         const motus_real got = d == 0 ? vx[0] : d == 1 ? vy[0] : vz[0];
@@ -571,17 +579,13 @@ TEST(tether_pull_from_far_across_is_representable) {
             motus_state state;
             double expected;
             memset(&scene, 0, sizeof scene);
-            memset(&state, 0, sizeof state);
             scene.method = methods[m];
             scene.tether = motus_v3((motus_real)(-0.75 * largest), 0, 0);
             scene.tether_stiffness = (motus_real)ldexp(1, -20);
             x[0] = (motus_real)(0.75 * largest);
             x[1] = scene.tether.x;
             expected = -(((double)x[0] * 0.5 - (double)scene.tether.x * 0.5) * ldexp(1, -19)); /* halves: no overflow in double */
-            state.dimensions = dims;
-            state.count = 2;
-            state.position[0] = x, state.position[1] = y, state.position[2] = z;
-            state.velocity[0] = vx, state.velocity[1] = vy, state.velocity[2] = vz;
+            state = state_of(dims, 2, x, y, z, vx, vy, vz);
             /* a step of 2^-30 s keeps the particle where it is to rounding: the pull is the same at every stage */
             ENSURE_EQ_INT(motus_step(&scene, &state, (motus_real)ldexp(1, -30), NULL, 0), MOTUS_OK);
             if (!(fabs((double)vx[0] / (expected * ldexp(1, -30)) - 1) <= 1e-5)) {
@@ -611,7 +615,6 @@ TEST(quadratic_drag_at_a_speed_whose_square_overflows) {
                 double u0 = 0, kept;
                 int d;
                 memset(&scene, 0, sizeof scene);
-                memset(&state, 0, sizeof state);
                 v0[0] = (motus_real)speed;
                 v0[1] = diagonal ? (motus_real)-speed : 0;
                 v0[2] = dims == 3 && diagonal ? (motus_real)speed : 0;
@@ -621,10 +624,7 @@ TEST(quadratic_drag_at_a_speed_whose_square_overflows) {
                 scene.quadratic_drag = (motus_real)(1e-3 / u0);
                 kept = 1 / (1 + (double)scene.quadratic_drag * u0);
                 vx[0] = v0[0], vy[0] = v0[1], vz[0] = v0[2];
-                state.dimensions = dims;
-                state.count = 1;
-                state.position[0] = x, state.position[1] = y, state.position[2] = z;
-                state.velocity[0] = vx, state.velocity[1] = vy, state.velocity[2] = vz;
+                state = state_of(dims, 1, x, y, z, vx, vy, vz);
                 ENSURE_EQ_INT(motus_step(&scene, &state, 1, NULL, 0), MOTUS_OK);
                 for (d = 0; d < dims; ++d) {
                     const motus_real got = d == 0 ? vx[0] : d == 1 ? vy[0] : vz[0];
@@ -656,15 +656,11 @@ TEST(attractor_pull_of_a_strength_near_the_largest_real) {
             int d;
             z[0] = dims == 3 ? (motus_real)0.9 : 0;
             memset(&scene, 0, sizeof scene);
-            memset(&state, 0, sizeof state);
             scene.method = methods[m];
             scene.attractor_strength = (motus_real)(REAL_MAX / 1.2);
             r[0] = (double)x[0], r[1] = (double)y[0], r[2] = (double)z[0];
             pull(r, dims, (double)scene.attractor_strength, a);
-            state.dimensions = dims;
-            state.count = 1;
-            state.position[0] = x, state.position[1] = y, state.position[2] = z;
-            state.velocity[0] = vx, state.velocity[1] = vy, state.velocity[2] = vz;
+            state = state_of(dims, 1, x, y, z, vx, vy, vz);
             ENSURE_EQ_INT(motus_step(&scene, &state, (motus_real)1e-3, NULL, 0), MOTUS_OK);
             for (d = 0; d < dims; ++d) {
                 const motus_real got = d == 0 ? vx[0] : d == 1 ? vy[0] : vz[0];
@@ -730,7 +726,6 @@ TEST(spring_of_1e20_at_its_rest_length_of_1e20) {
                 motus_scene scene;
                 motus_state state;
                 memset(&scene, 0, sizeof scene);
-                memset(&state, 0, sizeof state);
                 memset(&spring, 0, sizeof spring);
                 scene.method = methods[m];
                 spring.a = 0;
@@ -742,10 +737,7 @@ TEST(spring_of_1e20_at_its_rest_length_of_1e20) {
                 else y[1] = -L, spring.anchor = motus_v3(0, -L, 0);
                 scene.springs = &spring;
                 scene.spring_count = 1;
-                state.dimensions = dims;
-                state.count = 2;
-                state.position[0] = x, state.position[1] = y, state.position[2] = z;
-                state.velocity[0] = vx, state.velocity[1] = vy, state.velocity[2] = vz;
+                state = state_of(dims, 2, x, y, z, vx, vy, vz);
                 ENSURE(motus_scratch_size(&scene, &state) <= sizeof scratch);
                 ENSURE_EQ_INT(motus_step(&scene, &state, MOTUS_R(0.5), scratch, sizeof scratch), MOTUS_OK);
                 ENSURE(vx[0] == 0 && vy[0] == 0 && vz[0] == 0 && vx[1] == 0 && vy[1] == 0 && vz[1] == 0);
