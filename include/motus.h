@@ -1438,6 +1438,9 @@ MOTUS_DEF motus_real motus__stable_dt(motus_method method, motus_real omega_squa
     if (method == MOTUS_RK4) alpha = (motus_real)(2.8284271247461900976 / 2.7852935634050);
     if (method == MOTUS_FOREST_RUTH) alpha = 2;
     half = alpha * half_decay;
+    /* alpha*c/2 itself past the largest real (alpha <= 2): the same dt from rates a quarter as large, a
+       quarter of it (powers of two: nothing rounds unless the dt is subnormal) */
+    if (!motus_real_is_finite(half)) return motus__stable_dt(method, omega_squared / 16, half_decay / 4) / 4;
     sum = MOTUS__ROUND(half * half) + omega_squared;
     if (motus_real_is_finite(sum)) return limit / (half + MOTUS_SQRT(sum));
     omega = MOTUS_SQRT(omega_squared);

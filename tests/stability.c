@@ -518,6 +518,28 @@ TEST(scene_max_stable_dt_scales_what_overflows) {
         const double expected = 2 / (2 * (double)tiny * (double)big * sqrt(2.0));
         ENSURE_NEAR(dt, expected, 8 * EPS * expected);
     }
+    /* half the decay rate just under the largest real (0.99 of it: c = 1.98 at |v| = half the largest real),
+       so that alpha*c/2 overflows for RK4 (alpha 1.0155) and Forest-Ruth (alpha 2): every method's dt is a
+       quarter of the one at a quarter of the speed, positive (it was NaN with MOTUS_OK for those two) */
+    {
+        const motus_real largest = REAL_MAX;
+        int m;
+        c.scene.quadratic_drag = MOTUS_R(1.98);
+        for (m = 0; m < MOTUS_METHOD_COUNT; ++m) {
+            motus_real at_quarter = 0;
+            if (m == MOTUS_EXACT_LINEAR_DRAG) continue; /* +Inf: no limit */
+            c.scene.method = (motus_method)m;
+            c.v[0][1] = largest / 8, c.v[1][1] = 0;
+            ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &at_quarter, NULL, 0), MOTUS_OK);
+            c.v[0][1] = largest / 2;
+            ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &dt, NULL, 0), MOTUS_OK);
+            ENSURE(dt > 0 && motus_real_is_finite(dt));
+            /* within one subnormal step too: these dts are below the smallest normal real */
+            ENSURE_NEAR(dt, at_quarter / 4, 4 * EPS * (double)at_quarter / 4 + REAL_MIN_POSITIVE);
+        }
+        c.scene.method = MOTUS_SEMI_IMPLICIT_EULER;
+        c.v[0][1] = big;
+    }
     /* w^2 past the largest real: refused, dt untouched */
     c.scene.quadratic_drag = 0;
     c.scene.tether_stiffness = stiff;
