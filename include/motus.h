@@ -122,6 +122,35 @@
 #include <stdint.h> /* fixed-width integers: the bit-level finite check, the clock's ticks */
 #include <string.h> /* memcpy (the bit-level check in C++) */
 
+/* Warnings that motus's own code sets off by design, off for the header's lines alone (your code keeps
+   them): -Wfloat-equal (exact comparisons are meant: a dt of 0, a mass of 0, signed zeros, the bits two
+   paths must agree on), -Wswitch-enum (a switch on a method names some and sends the rest to a default),
+   and in C++ what C99 code cannot avoid: C casts (-Wold-style-cast), casts to motus_real that are ones
+   only in double (-Wuseless-cast), 0 for a null pointer (-Wzero-as-null-pointer-constant). */
+#if defined(__clang__)
+#define MOTUS__QUIET_CXX _Pragma("clang diagnostic ignored \"-Wold-style-cast\"") \
+    _Pragma("clang diagnostic ignored \"-Wzero-as-null-pointer-constant\"")
+#define MOTUS__QUIET_BEGIN _Pragma("clang diagnostic push") _Pragma("clang diagnostic ignored \"-Wfloat-equal\"") \
+    _Pragma("clang diagnostic ignored \"-Wswitch-enum\"") MOTUS__QUIET_LANGUAGE
+#define MOTUS__QUIET_END _Pragma("clang diagnostic pop")
+#elif defined(__GNUC__)
+#define MOTUS__QUIET_CXX _Pragma("GCC diagnostic ignored \"-Wold-style-cast\"") \
+    _Pragma("GCC diagnostic ignored \"-Wuseless-cast\"") _Pragma("GCC diagnostic ignored \"-Wzero-as-null-pointer-constant\"")
+#define MOTUS__QUIET_BEGIN _Pragma("GCC diagnostic push") _Pragma("GCC diagnostic ignored \"-Wfloat-equal\"") \
+    _Pragma("GCC diagnostic ignored \"-Wswitch-enum\"") MOTUS__QUIET_LANGUAGE
+#define MOTUS__QUIET_END _Pragma("GCC diagnostic pop")
+#else
+#define MOTUS__QUIET_CXX
+#define MOTUS__QUIET_BEGIN
+#define MOTUS__QUIET_END
+#endif
+#ifdef __cplusplus
+#define MOTUS__QUIET_LANGUAGE MOTUS__QUIET_CXX
+#else
+#define MOTUS__QUIET_LANGUAGE
+#endif
+MOTUS__QUIET_BEGIN
+
 /* >>config ====================================================================================== */
 #if defined(MOTUS_STATIC) && (defined(__GNUC__) || defined(__clang__))
 #define MOTUS__API_DEFAULT static __attribute__((unused)) /* a one-file program calls only some */
@@ -1623,11 +1652,13 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
 #ifdef __cplusplus
 } /* extern "C" */
 #endif
+MOTUS__QUIET_END
 #endif /* MOTUS_H */
 
 /* >>implementation ============================================================================== */
 #if defined(MOTUS_IMPLEMENTATION) && !defined(MOTUS__IMPLEMENTED)
 #define MOTUS__IMPLEMENTED
+MOTUS__QUIET_BEGIN
 /* The engine, compiled once per program. Contraction off for all of it (see >>config): its functions are
    called from your code, never inlined into it, so the pragma costs nothing. */
 #ifndef MOTUS_ALLOW_FP_CONTRACT
@@ -4448,6 +4479,7 @@ MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const
 #elif defined(MOTUS__ENGINE_PRAGMA_GCC)
 #pragma GCC pop_options
 #endif
+MOTUS__QUIET_END
 #endif /* MOTUS_IMPLEMENTATION */
 
 /*
