@@ -1962,6 +1962,17 @@ typedef struct motus__job {
 
 /* The terms with a square root and a division, out of line: a call per group of particles is small next
    to them, and it keeps every kernel small enough to compile fast (the scenes without them do not pay). */
+/* max |c_d| over the components, the unit in which the costly terms below scale what would overflow */
+MOTUS__KI motus__lane motus__largest_magnitude(const motus__lane *c, const int dims) {
+    const motus__lane zero = motus__splat(0);
+    motus__lane largest = motus__select(c[0] < zero, -c[0], c[0]);
+    int d;
+    for (d = 1; d < dims; ++d) {
+        const motus__lane m = motus__select(c[d] < zero, -c[d], c[d]);
+        largest = motus__select(m > largest, m, largest);
+    }
+    return largest;
+}
 MOTUS__KI void motus__costly_terms(const motus__job *j, const motus__lane *x, const motus__lane *v, motus__lane *a,
                                    const int dims) {
     const unsigned t = j->terms;
@@ -1979,11 +1990,7 @@ MOTUS__KI void motus__costly_terms(const motus__job *j, const motus__lane *x, co
                      (motus__mask)(v[1] - v[1] == zero);
         if (dims == 3) overflowed = overflowed & (motus__mask)(v[2] - v[2] == zero);
         if (motus__any(overflowed)) {
-            motus__lane largest = motus__select(v[0] < zero, -v[0], v[0]), sum = zero;
-            for (d = 1; d < dims; ++d) {
-                const motus__lane m = motus__select(v[d] < zero, -v[d], v[d]);
-                largest = motus__select(m > largest, m, largest);
-            }
+            motus__lane largest = motus__largest_magnitude(v, dims), sum = zero;
             largest = motus__select(overflowed, largest, motus__splat(1)); /* > 0 where it is used */
             for (d = 0; d < dims; ++d) sum = sum + (v[d] / largest) * (v[d] / largest);
             speed = motus__select(overflowed, largest * motus__sqrt(sum), speed);
@@ -1998,11 +2005,7 @@ MOTUS__KI void motus__costly_terms(const motus__job *j, const motus__lane *x, co
         motus__lane r[3], s, inverse_s, u2, pull;
         motus__mask at_centre;
         for (d = 0; d < dims; ++d) r[d] = x[d] - j->attractor[d];
-        s = motus__select(r[0] < zero, -r[0], r[0]);
-        for (d = 1; d < dims; ++d) {
-            const motus__lane m = motus__select(r[d] < zero, -r[d], r[d]);
-            s = motus__select(m > s, m, s);
-        }
+        s = motus__largest_magnitude(r, dims);
         at_centre = s == zero;
         inverse_s = motus__splat(1) / motus__select(at_centre, motus__splat(1), s);
         u2 = zero;
