@@ -184,6 +184,7 @@ typedef uint64_t motus__bits;
 #define MOTUS__EXPONENT_MASK 0x7FF0000000000000ull
 #define MOTUS_REAL_EPSILON 2.2204460492503131e-16
 #define MOTUS__REAL_MAX 1.7976931348623157e308
+#define MOTUS__REAL_MIN_NORMAL 2.2250738585072014e-308
 #ifndef MOTUS_SQRT
 #define MOTUS_SQRT(x) sqrt(x)
 #define MOTUS_EXP(x) exp(x)
@@ -197,6 +198,7 @@ typedef uint32_t motus__bits;
 #define MOTUS__EXPONENT_MASK 0x7F800000u
 #define MOTUS_REAL_EPSILON 1.1920929e-7f
 #define MOTUS__REAL_MAX 3.40282347e38f
+#define MOTUS__REAL_MIN_NORMAL 1.17549435e-38f
 #ifndef MOTUS_SQRT
 #define MOTUS_SQRT(x) sqrtf(x)
 #define MOTUS_EXP(x) expf(x)
@@ -1999,32 +2001,45 @@ MOTUS__KI void motus__costly_terms(const motus__job *j, const motus__lane *x, co
         for (d = 0; d < dims; ++d) a[d] = a[d] - v[d] * drag;
     }
     if (t & MOTUS__T_ATTRACTOR) {
-        /* mu*r/|r|^3 = mu*u/(s^2*|u|^3) with s = max|r_d| and u = r/s (|u| in [1, sqrt(3)]): neither r^2 nor
-           |r|^3 is formed, so a pull that is representable is not lost to their overflow (float's r^2
-           overflows at |r| = 1.8e19 m) or underflow. No pull at the attractor itself. */
-        motus__lane r[3], s, inverse_s, u2, pull;
-        motus__mask at_centre;
+        /* a = -mu*r/|r|^3: pull = mu/(r^2*|r|), the textbook formula, where r^2*|r| is a normal real and the
+           pull finite; the chain to the pull is then one division and one root long (the scaled form below
+           is one of each longer, and this term's time is that chain's latency: Kepler orbits 1.4-1.5x faster
+           with semi-implicit Euler and RK4 at -O2 on Zen 4, in float and in double). */
+        motus__lane r[3], r2, cube, pull;
+        motus__mask scaled;
         for (d = 0; d < dims; ++d) r[d] = x[d] - j->attractor[d];
-        s = motus__largest_magnitude(r, dims);
-        at_centre = s == zero;
-        inverse_s = motus__splat(1) / motus__select(at_centre, motus__splat(1), s);
-        u2 = zero;
-        for (d = 0; d < dims; ++d) {
-            r[d] = r[d] * inverse_s;
-            u2 = u2 + r[d] * r[d];
+        r2 = r[0] * r[0] + r[1] * r[1];
+        if (dims == 3) r2 = r2 + r[2] * r[2];
+        cube = r2 * motus__sqrt(r2);
+        pull = j->attractor_strength / cube;
+        /* Elsewhere (a NaN is neither: it stays NaN): r^2 overflows from |r| = 1.8e19 m in float and r^2*|r|
+           from 7e12 m, where the pull is still representable; below the smallest normal real they have lost
+           their digits (and at the attractor itself they are 0); mu/|r|^3 overflows for mu near the largest
+           real at under 1 m, where mu*r/|r|^3 may not. Those lanes take mu*u/(s^2*|u|^3) with s = max|r_d|
+           and u = r/s (|u| in [1, sqrt(3)]), which forms neither r^2 nor |r|^3. */
+        scaled = (motus__mask)(cube > j->largest) |
+                 (motus__mask)(cube < motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL)) | (motus__mask)(pull > j->largest);
+        if (motus__any(scaled)) {
+            motus__lane s, inverse_s, u2, u[3], scaled_pull;
+            motus__mask at_centre;
+            s = motus__largest_magnitude(r, dims);
+            at_centre = s == zero; /* no pull at the attractor itself */
+            inverse_s = motus__splat(1) / motus__select(at_centre, motus__splat(1), s);
+            u2 = zero;
+            for (d = 0; d < dims; ++d) {
+                u[d] = r[d] * inverse_s;
+                u2 = u2 + u[d] * u[d];
+            }
+            scaled_pull = j->attractor_strength * inverse_s * inverse_s / (u2 * motus__sqrt(u2));
+            /* mu*(1/s)^2 overflows for mu near the largest real and s < 1 where the pull may not (|u|^3 up to
+               5.2 divides it): there (mu/|u|^3)*(1/s)*(1/s), each product no larger than the pull. The pull
+               is the largest component of the acceleration (that of u is 1), so a pull that overflows is an
+               acceleration that does. */
+            scaled_pull = motus__select((motus__mask)(scaled_pull > j->largest) & (motus__mask)(u2 - u2 == zero),
+                                     j->attractor_strength / (u2 * motus__sqrt(u2)) * inverse_s * inverse_s, scaled_pull);
+            pull = motus__select(scaled, motus__select(at_centre, zero, scaled_pull), pull);
+            for (d = 0; d < dims; ++d) r[d] = motus__select(scaled, u[d], r[d]); /* that pull acts on u */
         }
-        pull = j->attractor_strength * inverse_s * inverse_s / (u2 * motus__sqrt(u2));
-        /* mu*(1/s)^2 overflows for mu near the largest real and s < 1 where the pull may not (|u|^3 up to
-           5.2 divides it): there (mu/|u|^3)*(1/s)*(1/s), each product no larger than the pull. The pull is the
-           largest component of the acceleration (that of u is 1), so a pull that overflows is an acceleration
-           that does. Only those lanes: the other bits do not change. */
-        {
-            const motus__mask overflowed = (motus__mask)(pull > j->largest) & (motus__mask)(u2 - u2 == zero);
-            if (motus__any(overflowed))
-                pull = motus__select(overflowed,
-                                     j->attractor_strength / (u2 * motus__sqrt(u2)) * inverse_s * inverse_s, pull);
-        }
-        pull = motus__select(at_centre, zero, pull);
         for (d = 0; d < dims; ++d) a[d] = a[d] - r[d] * pull;
     }
 }

@@ -638,6 +638,44 @@ TEST(quadratic_drag_at_a_speed_whose_square_overflows) {
             }
 }
 
+TEST(attractor_pull_is_right_at_every_distance) {
+    /* The pull is mu/(r^2*|r|) where r^2*|r| is a normal real and the pull finite, and the scaled form
+       elsewhere: at every distance from 1e-18 to 1e18 m in float (1e-150 to 1e150 m in double), in steps of
+       10^0.25 (crossing where r^2*|r| leaves the normal reals: 2.3e-13 m in float, and 7e12 m, and where r^2
+       does: 1.8e19 m), with mu = |r|^2 (a pull of 1 m/s^2), on an axis and on a diagonal, 2D and 3D: one
+       step of 1e-3 s from rest gives v = a*dt to 8 ulps. */
+    const double widest = sizeof(motus_real) == sizeof(float) ? 18 : 150;
+    double exponent;
+    int dims, diagonal, d;
+    for (exponent = -widest; exponent <= widest; exponent += 0.25)
+        for (dims = 2; dims <= 3; ++dims)
+            for (diagonal = 0; diagonal < 2; ++diagonal) {
+                const double distance = pow(10, exponent);
+                motus_real x[1], y[1], z[1], vx[1] = {0}, vy[1] = {0}, vz[1] = {0};
+                motus_scene scene;
+                motus_state state;
+                double r[3], a[3];
+                x[0] = (motus_real)distance;
+                y[0] = diagonal ? (motus_real)(-0.75 * distance) : 0;
+                z[0] = dims == 3 && diagonal ? (motus_real)(0.5 * distance) : 0;
+                memset(&scene, 0, sizeof scene);
+                scene.method = MOTUS_SEMI_IMPLICIT_EULER;
+                scene.attractor_strength = (motus_real)(distance * distance);
+                r[0] = (double)x[0], r[1] = (double)y[0], r[2] = (double)z[0];
+                pull(r, dims, (double)scene.attractor_strength, a);
+                state = state_of(dims, 1, x, y, z, vx, vy, vz);
+                ENSURE_EQ_INT(motus_step(&scene, &state, (motus_real)1e-3, NULL, 0), MOTUS_OK);
+                for (d = 0; d < dims; ++d) {
+                    const double got = (double)(d == 0 ? vx[0] : d == 1 ? vy[0] : vz[0]), want = a[d] * 1e-3;
+                    if (!(fabs(got - want) <= 8 * (double)MOTUS_REAL_EPSILON * fabs(want))) {
+                        fprintf(stderr, "  %dD%s, |x| %g m: v[%d] = %.9g, expected %.9g\n", dims,
+                                diagonal ? " diagonal" : "", distance, d, got, want);
+                        motus_test_failures++;
+                    }
+                }
+            }
+}
+
 TEST(attractor_pull_of_a_strength_near_the_largest_real) {
     /* mu = largest/1.2 at r = (0.9, +-0.9[, 0.9]) m: mu*(1/s)^2 overflows (s = 0.9), the pull mu/|r|^2 along
        each axis (mu*0.9/|r|^3: 0.39*mu in 2D, 0.23*mu in 3D) does not. One step of 1e-3 s from rest with a
@@ -841,6 +879,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(attractor_pull_far_away_is_representable),
     TEST_CASE(tether_pull_from_far_across_is_representable),
     TEST_CASE(quadratic_drag_at_a_speed_whose_square_overflows),
+    TEST_CASE(attractor_pull_is_right_at_every_distance),
     TEST_CASE(attractor_pull_of_a_strength_near_the_largest_real),
     TEST_CASE(exact_stepper_at_huge_drag_and_dt),
     TEST_CASE(spring_of_1e20_at_its_rest_length_of_1e20),
