@@ -48,6 +48,7 @@ asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|cla
 # - example.*: raylib programs in Xvfb with GLX on llvmpipe: under valgrind a frame takes longer than the key
 #   tests' timing allows, and what it reports is Mesa's; they run under ASan instead.
 # - compile.flags.*: the engine compiled (not run) at six flag sets: gcc's work, not motus's.
+# - compile.*.quiet.*: the header compiled (-fsyntax-only, nothing run) under extra warnings: the same.
 # - compile.engine.*: engine.c rebuilt at every lane width (and -march=native, which valgrind cannot decode
 #   on an AVX-512 machine): 4-25 s each natively, half an hour under valgrind; the default build's engine.*
 #   runs under valgrind and ASan (the widths are checked for identical bits in the normal tree only).
@@ -64,7 +65,7 @@ asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|cla
 #   ones run natively and under ASan.
 # Script-driven tests (compile.gcc.* ...) run with --trace-children: valgrind follows the programs the script
 # starts from the build tree and skips system programs (compilers, shells' tools) by the skip patterns.
-valgrind_exclude='^(compile\.(engine|flags)\.|determinism\.|consumer\.|example\.|bench\.|engine(_checked)?\.(float|double)\.paths_agree_|stability\.(float|double)\.ten_million_steps$|contacts\.[a-z_]+\.pile_of_2000_settles$|threads\.|render\.(double\.|canvas_centroid_accuracy$))'
+valgrind_exclude='^(compile\.(engine|flags)\.|compile\.[a-z+]+\.quiet\.|determinism\.|consumer\.|example\.|bench\.|engine(_checked)?\.(float|double)\.paths_agree_|stability\.(float|double)\.ten_million_steps$|contacts\.[a-z_]+\.pile_of_2000_settles$|threads\.|render\.(double\.|canvas_centroid_accuracy$))'
 valgrind_options="--error-exitcode=1 --trace-children=yes --trace-children-skip=/usr/*,/bin/*,/sbin/* --leak-check=full --show-leak-kinds=definite --errors-for-leak-kinds=definite \
 --track-origins=yes --num-callers=30 --suppressions=$root/tests/support/valgrind.supp"
 

@@ -13,7 +13,7 @@ if ! command -v "$compiler" >/dev/null 2>&1; then
     exit 77
 fi
 dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
+finish() { rm -rf "$dir"; exit "$1"; } # not a trap: dash's leaks its string under valgrind
 cat >"$dir/quiet.c" <<'UNIT'
 #define MOTUS_IMPLEMENTATION
 #include "motus.h"
@@ -23,12 +23,13 @@ int quiet_game_code(motus_real a) { return a == motus_particle3_mass(NULL); } /*
 int quiet_unit(void) { return MOTUS_VERSION; }
 UNIT
 echo "$compiler $* -I$include -fsyntax-only quiet.c"
-"$compiler" "$@" -I"$include" -fsyntax-only "$dir/quiet.c"
+"$compiler" "$@" -I"$include" -fsyntax-only "$dir/quiet.c" || finish 1
 echo "again with a float == in the unit's own code: it must be reported"
 if "$compiler" "$@" -DQUIET_GAME_CODE -I"$include" -fsyntax-only "$dir/quiet.c" 2>"$dir/log"; then
     echo "FAILED: the unit's own a == b compiled without a warning: the header left -Wfloat-equal off"
-    exit 1
+    finish 1
 fi
 cat "$dir/log"
-grep -q 'quiet\.c:4:.*float-equal' "$dir/log" || { echo "FAILED: no -Wfloat-equal on the unit's line 4"; exit 1; }
+grep -q 'quiet\.c:4:.*float-equal' "$dir/log" || { echo "FAILED: no -Wfloat-equal on the unit's line 4"; finish 1; }
 echo ok
+finish 0
