@@ -2036,7 +2036,8 @@ MOTUS__KI void motus__costly_terms(const motus__job *j, const motus__lane *x, co
                is the largest component of the acceleration (that of u is 1), so a pull that overflows is an
                acceleration that does. */
             scaled_pull = motus__select((motus__mask)(scaled_pull > j->largest) & (motus__mask)(u2 - u2 == zero),
-                                     j->attractor_strength / (u2 * motus__sqrt(u2)) * inverse_s * inverse_s, scaled_pull);
+                                        j->attractor_strength / (u2 * motus__sqrt(u2)) * inverse_s * inverse_s,
+                                        scaled_pull);
             pull = motus__select(scaled, motus__select(at_centre, zero, scaled_pull), pull);
             for (d = 0; d < dims; ++d) r[d] = motus__select(scaled, u[d], r[d]); /* that pull acts on u */
         }

@@ -13,7 +13,7 @@ if ! command -v "$compiler" >/dev/null 2>&1; then
     exit 77
 fi
 dir=$(mktemp -d)
-finish() { rm -rf "$dir"; exit "$1"; } # not a trap: dash's leaks its string under valgrind
+finish() { rm -rf "$dir"; exit "$1"; } # not a trap: dash's trap leaks its string under valgrind
 cat >"$dir/quiet.c" <<'UNIT'
 #define MOTUS_IMPLEMENTATION
 #include "motus.h"
