@@ -125,19 +125,31 @@
 /* Warnings that motus's own code sets off by design, off for the header's lines alone (your code keeps
    them): -Wfloat-equal (exact comparisons are meant: a dt of 0, a mass of 0, signed zeros, the bits two
    paths must agree on), -Wswitch-enum (a switch on a method names some and sends the rest to a default),
-   and in C++ what C99 code cannot avoid: C casts (-Wold-style-cast), casts to motus_real that are ones
-   only in double (-Wuseless-cast), 0 for a null pointer (-Wzero-as-null-pointer-constant). */
+   -Wpadded (the structs' layout is the API's), with Clang -Wcomma (a for loop that steps two indices) and
+   -Wused-but-marked-unused (the static API of MOTUS_STATIC), and in C++ what C99 code cannot avoid: C
+   casts (-Wold-style-cast), casts to motus_real that are ones only in double (-Wuseless-cast), 0 for a null
+   pointer (-Wzero-as-null-pointer-constant), and motus__ names (a double underscore is reserved in C++,
+   -Wreserved-identifier; the prefix is the stb and sokol convention for a header's internals). */
 #if defined(__clang__)
+/* the lines up to the push below define macros with motus__ names too */
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wunknown-warning-option" /* Clang before 13: no -Wreserved-* */
+#pragma clang diagnostic ignored "-Wreserved-macro-identifier"
 #define MOTUS__QUIET_CXX _Pragma("clang diagnostic ignored \"-Wold-style-cast\"") \
-    _Pragma("clang diagnostic ignored \"-Wzero-as-null-pointer-constant\"")
+    _Pragma("clang diagnostic ignored \"-Wzero-as-null-pointer-constant\"") \
+    _Pragma("clang diagnostic ignored \"-Wreserved-identifier\"") \
+    _Pragma("clang diagnostic ignored \"-Wreserved-macro-identifier\"")
 #define MOTUS__QUIET_BEGIN _Pragma("clang diagnostic push") _Pragma("clang diagnostic ignored \"-Wfloat-equal\"") \
-    _Pragma("clang diagnostic ignored \"-Wswitch-enum\"") MOTUS__QUIET_LANGUAGE
+    _Pragma("clang diagnostic ignored \"-Wswitch-enum\"") _Pragma("clang diagnostic ignored \"-Wpadded\"") \
+    _Pragma("clang diagnostic ignored \"-Wcomma\"") _Pragma("clang diagnostic ignored \"-Wused-but-marked-unused\"") \
+    _Pragma("clang diagnostic ignored \"-Wunknown-warning-option\"") MOTUS__QUIET_LANGUAGE
 #define MOTUS__QUIET_END _Pragma("clang diagnostic pop")
 #elif defined(__GNUC__)
 #define MOTUS__QUIET_CXX _Pragma("GCC diagnostic ignored \"-Wold-style-cast\"") \
     _Pragma("GCC diagnostic ignored \"-Wuseless-cast\"") _Pragma("GCC diagnostic ignored \"-Wzero-as-null-pointer-constant\"")
 #define MOTUS__QUIET_BEGIN _Pragma("GCC diagnostic push") _Pragma("GCC diagnostic ignored \"-Wfloat-equal\"") \
-    _Pragma("GCC diagnostic ignored \"-Wswitch-enum\"") MOTUS__QUIET_LANGUAGE
+    _Pragma("GCC diagnostic ignored \"-Wswitch-enum\"") _Pragma("GCC diagnostic ignored \"-Wpadded\"") \
+    MOTUS__QUIET_LANGUAGE
 #define MOTUS__QUIET_END _Pragma("GCC diagnostic pop")
 #else
 #define MOTUS__QUIET_CXX
@@ -148,6 +160,9 @@
 #define MOTUS__QUIET_LANGUAGE MOTUS__QUIET_CXX
 #else
 #define MOTUS__QUIET_LANGUAGE
+#endif
+#if defined(__clang__)
+#pragma clang diagnostic pop
 #endif
 MOTUS__QUIET_BEGIN
 
@@ -1659,8 +1674,8 @@ MOTUS__QUIET_END
 
 /* >>implementation ============================================================================== */
 #if defined(MOTUS_IMPLEMENTATION) && !defined(MOTUS__IMPLEMENTED)
-#define MOTUS__IMPLEMENTED
 MOTUS__QUIET_BEGIN
+#define MOTUS__IMPLEMENTED
 /* The engine, compiled once per program. Contraction off for all of it (see >>config): its functions are
    called from your code, never inlined into it, so the pragma costs nothing. */
 #ifndef MOTUS_ALLOW_FP_CONTRACT

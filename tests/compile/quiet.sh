@@ -1,7 +1,8 @@
 #!/bin/sh
 # Usage: quiet.sh INCLUDE_DIR COMPILER [FLAGS...]
-# The warnings motus.h keeps off over its own lines (MOTUS__QUIET_BEGIN: -Wfloat-equal, -Wswitch-enum, and
-# in C++ -Wold-style-cast, -Wuseless-cast, -Wzero-as-null-pointer-constant), which a game's build may turn
+# The warnings motus.h keeps off over its own lines (MOTUS__QUIET_BEGIN: -Wfloat-equal, -Wswitch-enum, -Wpadded,
+# with Clang -Wcomma and -Wused-but-marked-unused, and in C++ -Wold-style-cast, -Wuseless-cast,
+# -Wzero-as-null-pointer-constant, -Wreserved-identifier and -Wreserved-macro-identifier), which a game's build may turn
 # on: the header with its implementation must compile under FLAGS (they carry -Werror) with no warning, and
 # the same warning in the including file's own code, after the header, must still be reported (the pragma
 # is popped, not left on for the game). Exit 77 (skipped) when the compiler is not installed.
