@@ -3011,7 +3011,7 @@ MOTUS__KI void motus__spring_force(const motus_spring *s, const motus_real *dx, 
     MOTUS__EACH_D(force[d] = unit[d] * -magnitude;);
 }
 
-/* The springs' forces of one stage, added to force[]. Inlined with dims a constant (2 or 3): with a count
+/* The springs' forces of one stage, added to force[]. Inlined with dims a constant (2 or 3): with dims
    known only at run time the small arrays went through the stack, and two 4-byte stores read back as one
    8-byte load cannot be forwarded (2.5x slower: 30 ns a spring in 2D float, -O3 -march=native). */
 MOTUS__KI void motus__add_spring_forces(const motus__job *j, const motus_scene *scene, motus_real *const *force,
