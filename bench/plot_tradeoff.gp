@@ -20,10 +20,11 @@ set style line 6 lc rgb "#393b79" lw 2 pt 14 ps 1.1  # leapfrog
 set style line 7 lc rgb "#6b6ecf" lw 2 pt 14 ps 1.1  # leapfrog, forces reused
 set style line 8 lc rgb "#7f7f7f" lw 2 pt 2 ps 1.1   # midpoint
 set style line 9 lc rgb "#2ca02c" lw 2 pt 5 ps 1.0   # RK4 (motus, odeint runge_kutta4)
-set style line 10 lc rgb "#9467bd" lw 2 pt 7 ps 1.0  # 4th-order symplectic (Forest-Ruth, McLachlan SB3A)
+set style line 10 lc rgb "#9467bd" lw 2 pt 7 ps 1.0  # Forest-Ruth
 set style line 11 lc rgb "#bcbd22" lw 2 pt 3 ps 1.1  # exact linear-drag step
 set style line 12 lc rgb "#004d00" lw 2 pt 9 ps 1.1  # GSL rk4 (step doubling)
 set style line 13 lc rgb "#000000" lw 2 pt 11 ps 1.1 # GSL rk8pd
+set style line 14 lc rgb "#e377c2" lw 2 pt 13 ps 1.1 # McLachlan's 4th order (motus mclachlan4, odeint sb3a_mclachlan)
 set style line 20 lc rgb "#808080" lw 1.5 dt 3       # reference slopes
 
 set logscale xy

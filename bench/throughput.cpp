@@ -72,8 +72,8 @@ const char *const method_names[] = {"motus", "hand", "general", "textbook", "mot
                                     "rmw_threads", "odeint_symplectic_euler", "odeint_velocity_verlet",
                                     "odeint_runge_kutta4", "textbook_hand", "motus_explicit_euler",
                                     "motus_position_verlet", "motus_velocity_verlet", "motus_leapfrog",
-                                    "motus_midpoint", "motus_rk4", "motus_forest_ruth", "motus_exact_linear_drag",
-                                    "textbook_engine"};
+                                    "motus_midpoint", "motus_rk4", "motus_forest_ruth", "motus_mclachlan4",
+                                    "motus_exact_linear_drag", "textbook_engine"};
 const char *const method_titles[] = {"motus semi_implicit_euler", "hand-written loop (semi-implicit Euler)",
                                      "motus semi_implicit_euler + walls nobody reaches",
                                      "textbook path: motus_particle_* per particle", "motus, 2 threads (step_range)",
@@ -83,7 +83,7 @@ const char *const method_titles[] = {"motus semi_implicit_euler", "hand-written 
                                      "textbook path written by hand (same structs, same math)",
                                      "motus explicit_euler", "motus position_verlet", "motus velocity_verlet",
                                      "motus leapfrog", "motus midpoint", "motus rk4", "motus forest_ruth",
-                                     "motus exact_linear_drag",
+                                     "motus mclachlan4", "motus exact_linear_drag",
                                      "motus_step over the same structs (motus_state_of_particles)"};
 const int reset_every = 600; // steps
 
@@ -325,7 +325,8 @@ std::vector<group> groups() {
     const int basic[] = {THROUGHPUT_MOTUS, THROUGHPUT_HAND, THROUGHPUT_GENERAL,
                          THROUGHPUT_MOTUS_EXPLICIT_EULER, THROUGHPUT_MOTUS_POSITION_VERLET,
                          THROUGHPUT_MOTUS_VELOCITY_VERLET, THROUGHPUT_MOTUS_LEAPFROG, THROUGHPUT_MOTUS_MIDPOINT,
-                         THROUGHPUT_MOTUS_RK4, THROUGHPUT_MOTUS_FOREST_RUTH, THROUGHPUT_MOTUS_EXACT_LINEAR_DRAG};
+                         THROUGHPUT_MOTUS_RK4, THROUGHPUT_MOTUS_FOREST_RUTH, THROUGHPUT_MOTUS_MCLACHLAN4,
+                         THROUGHPUT_MOTUS_EXACT_LINEAR_DRAG};
     std::vector<group> all;
     for (int scene : {THROUGHPUT_GRAVITY_DAMPING, THROUGHPUT_DRIFT, THROUGHPUT_GRAVITY, THROUGHPUT_GRAVITY_LINEAR_DRAG,
                       THROUGHPUT_MASS_FORCES, THROUGHPUT_SPRINGS, THROUGHPUT_ATTRACTOR}) {
@@ -832,7 +833,8 @@ void report_targets(std::ostream &md, const results &res) {
         // and writes x and v once, the bytes of the in-place bound; each must be within 1.15x of it.
         for (int method : {THROUGHPUT_MOTUS, THROUGHPUT_MOTUS_EXPLICIT_EULER, THROUGHPUT_MOTUS_POSITION_VERLET,
                            THROUGHPUT_MOTUS_VELOCITY_VERLET, THROUGHPUT_MOTUS_LEAPFROG, THROUGHPUT_MOTUS_MIDPOINT,
-                           THROUGHPUT_MOTUS_RK4, THROUGHPUT_MOTUS_FOREST_RUTH, THROUGHPUT_MOTUS_EXACT_LINEAR_DRAG}) {
+                           THROUGHPUT_MOTUS_RK4, THROUGHPUT_MOTUS_FOREST_RUTH, THROUGHPUT_MOTUS_MCLACHLAN4,
+                           THROUGHPUT_MOTUS_EXACT_LINEAR_DRAG}) {
             double worst = 0;
             std::string worst_at, bounds;
             for (int dims = 2; dims <= 3; ++dims)

@@ -58,6 +58,7 @@ enum {
     THROUGHPUT_MOTUS_MIDPOINT,
     THROUGHPUT_MOTUS_RK4,
     THROUGHPUT_MOTUS_FOREST_RUTH,
+    THROUGHPUT_MOTUS_MCLACHLAN4,
     THROUGHPUT_MOTUS_EXACT_LINEAR_DRAG,
     THROUGHPUT_TEXTBOOK_ENGINE, /* the textbook's scene (gravity, damping, walls) through motus_step over the same
                                    array of motus_particle (motus_state_of_particles: the engine reads the structs

@@ -61,7 +61,7 @@ struct line {
 
 enum { STYLE_EXPLICIT_EULER = 1, STYLE_SEMI_IMPLICIT_EULER, STYLE_POSITION_VERLET, STYLE_VELOCITY_VERLET,
        STYLE_VELOCITY_VERLET_REUSE, STYLE_LEAPFROG, STYLE_LEAPFROG_REUSE, STYLE_MIDPOINT, STYLE_RK4,
-       STYLE_FOREST_RUTH, STYLE_EXACT, STYLE_GSL_RK4, STYLE_RK8PD };
+       STYLE_FOREST_RUTH, STYLE_EXACT, STYLE_GSL_RK4, STYLE_RK8PD, STYLE_MCLACHLAN };
 
 std::vector<line> make_lines() {
     struct motus_entry {
@@ -79,10 +79,11 @@ std::vector<line> make_lines() {
         {MOTUS_MIDPOINT, 0, STYLE_MIDPOINT, true},
         {MOTUS_RK4, 0, STYLE_RK4, true},
         {MOTUS_FOREST_RUTH, 0, STYLE_FOREST_RUTH, true},
+        {MOTUS_MCLACHLAN4, 0, STYLE_MCLACHLAN, true},
         {MOTUS_EXACT_LINEAR_DRAG, 0, STYLE_EXACT, true},
     };
     static const int peer_style[PEER_COUNT] = {STYLE_EXPLICIT_EULER, STYLE_SEMI_IMPLICIT_EULER,
-                                               STYLE_VELOCITY_VERLET, STYLE_RK4, STYLE_FOREST_RUTH,
+                                               STYLE_VELOCITY_VERLET, STYLE_RK4, STYLE_MCLACHLAN,
                                                STYLE_GSL_RK4, STYLE_RK8PD};
     std::vector<line> lines;
     for (int single = 0; single <= 1; ++single) {
@@ -499,7 +500,7 @@ int main(int argc, char **argv) {
         {"explicit_euler", "odeint euler", 0},           {"semi_implicit_euler", "odeint symplectic_euler", 2},
         {"velocity_verlet", "odeint velocity_verlet", 3},
         {"rk4", "odeint runge_kutta4", 4},               {"rk4", "gsl rk4", 4},
-        {"forest_ruth", "odeint sb3a_mclachlan", 0},     {"best motus method", "gsl rk8pd", 0},
+        {"mclachlan4", "odeint sb3a_mclachlan", 0},      {"best motus method", "gsl rk8pd", 0},
     };
     auto required_speedup = [&](size_t pi, int which) -> double {
         if (pairs[pi].speedup <= 0) return 0;

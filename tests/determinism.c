@@ -1,6 +1,6 @@
 /* Determinism: golden hashes of a 1000-particle scene after 500, 10^4 and 10^5 steps, in float and in double
    (MOTUS_DOUBLE), 2D and 3D: every method through motus_step (no coupling: all stages in registers), the
-   coupled path (springs: staged passes over scratch) for three methods, collisions (scene.contacts) in 2D and
+   coupled path (springs: staged passes over scratch) for four methods, collisions (scene.contacts) in 2D and
    3D, and a motus_particle_step loop; and
    the paths that run the same scene agree bit for bit (twins: a particle loop = the scene it equals, a range
    split = the whole, structs = plain arrays). The hash is FNV-1a 64 of every position and velocity bit,
@@ -112,6 +112,9 @@ static const path PATHS[] = {
     {"contacts_rk4_3d", CONTACTS, MOTUS_RK4, 3, -1, 0},
     {"tether_velocity_verlet_2d", TETHERED, MOTUS_VELOCITY_VERLET, 2, -1, 0},
     {"tether_forest_ruth_3d", TETHERED, MOTUS_FOREST_RUTH, 3, -1, 0},
+    {"mclachlan4_2d", SCENE, MOTUS_MCLACHLAN4, 2, -1, 0},
+    {"mclachlan4_3d", SCENE, MOTUS_MCLACHLAN4, 3, -1, 0},
+    {"springs_mclachlan4_3d", SPRUNG, MOTUS_MCLACHLAN4, 3, -1, 0},
 };
 enum { PATH_COUNT = (int)(sizeof PATHS / sizeof PATHS[0]) };
 
@@ -130,7 +133,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x245c6c0391cf4dafull, 0xbdaec1cdebf1bdd3ull, 0x6c1e7671ee55c571ull,
      0x6c1e7671ee55c571ull, 0x1c6673fe7180dac5ull, 0x1c6673fe7180dac5ull,
      0xe89c593f25af95aeull, 0x4ac737037b309d7eull, 0x88da3c8e5f558fc0ull,
-     0xde0f71625c9d3defull},
+     0xde0f71625c9d3defull,
+     0xe4ebf2f716882bc8ull, 0x912be44f43d786c2ull, 0xc64fb821a23c5194ull},
     {0x8945b4e71c0a8d0cull, 0xd83e2144df916ab5ull, 0xc6121038ffdf15f1ull,
      0xc851d4bfcae5dc96ull, 0x7f8c99ea6517cd76ull, 0x96d0ed997918c7f1ull,
      0x22e341dcf862d847ull, 0xd5ab24093f2c3478ull, 0x0ce5a4294f32a2cfull,
@@ -142,7 +146,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0xd9e6bfe276e492e9ull, 0x3c050647c96051c0ull, 0x5798c5eba60367f8ull,
      0x5798c5eba60367f8ull, 0xab16cf8b206d2a81ull, 0xab16cf8b206d2a81ull,
      0x5b19dbcaf2dce5a1ull, 0x530369a895be6ee1ull, 0x33e93133381755c2ull,
-     0x4be316d40da61f6aull},
+     0x4be316d40da61f6aull,
+     0x44acb4a6f9e51580ull, 0x9459f4df7a015e79ull, 0x8c930046e8eec78dull},
     {0x32ad5fb480e59999ull, 0x7e26e0f8bc717557ull, 0x62f5624ec346d59cull,
      0x4b3ff7e2032df532ull, 0xedd838f7c3344cfeull, 0x6858a3503e4826c8ull,
      0x9a5b7318f149e2a8ull, 0x797d1cdbce8609fdull, 0x71fa7738cfbb0554ull,
@@ -154,7 +159,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x0df23ccef27e3dddull, 0x1cd57a292935c713ull, 0x2620d062a3fa7931ull,
      0x2620d062a3fa7931ull, 0x0c088d445822724eull, 0x0c088d445822724eull,
      0xaa95a29a3d518901ull, 0xaeebc2a4035404fdull, 0x53d90f8cad8936d0ull,
-     0x46e344b7fe656bf2ull},
+     0x46e344b7fe656bf2ull,
+     0x748d53133fe808a4ull, 0x0b6e126903f7673full, 0xe8b4ca89341e3e0dull},
     {0xcaac3c15e9edfb32ull, 0x56e8875806143938ull, 0x2d62e52cee1da5cfull,
      0x54e483f30b4e5451ull, 0x52dbbf44f3ba83e4ull, 0x1156ca711f1aa5b9ull,
      0x8d1106701ad75cacull, 0xccbe2ec67d285a1bull, 0xe34827ae41cd7195ull,
@@ -166,7 +172,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0xd7aaebe5471359d8ull, 0xf6a2e2d2bc848dc7ull, 0x4591d91e0487cfa3ull,
      0x4591d91e0487cfa3ull, 0x70f200851a682d37ull, 0x70f200851a682d37ull,
      0x1fed87454f584fdaull, 0xa2d97dac916f2edeull, 0x53b78f43abd200e8ull,
-     0xb63040ed6994a753ull},
+     0xb63040ed6994a753ull,
+     0x4e029db153440cf4ull, 0x467cee8550df575eull, 0x3f2249c76b5e8e80ull},
 };
 static const uint64_t GLIBC_EXP_BITS = 0x3fefddf00bbd0dacull;
 #else
@@ -182,7 +189,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0xa36db0a2c1393bc8ull, 0xa7bc615c628fdd0bull, 0x0060f97004c70802ull,
      0x0060f97004c70802ull, 0x470f9db34b62298aull, 0x470f9db34b62298aull,
      0xdc562c9259901a1eull, 0x108f6773818f7c71ull, 0x00b65938e9a5c495ull,
-     0xa0b4de94de9deab7ull},
+     0xa0b4de94de9deab7ull,
+     0x932cb5e30a58db19ull, 0x144bfbca6e0ba5e9ull, 0x9bfeec4cd63bca9cull},
     {0xa9699f9bf63378a9ull, 0x8e23ee6306c3b84cull, 0x3ff7d32329bc434bull,
      0x411bd65ab672a062ull, 0x07e594b2daab1ff7ull, 0x4352f15f621c5acbull,
      0x79251af4fdc7ce0eull, 0xae19db8079288669ull, 0x9076df96d8cb2158ull,
@@ -194,7 +202,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0x115ce1c1b0b6ce44ull, 0x3dc6fe8fce2e6385ull, 0x6c0bb31aa9774eefull,
      0x6c0bb31aa9774eefull, 0xf4280c86e7d1bc30ull, 0xf4280c86e7d1bc30ull,
      0xd50960c1171efacbull, 0x89cf6c59ce5babeeull, 0x023f85bc3bb5dadcull,
-     0x01ad25a95c59e353ull},
+     0x01ad25a95c59e353ull,
+     0x74a9833be50b723full, 0xee3f7be2437a8c8cull, 0x40f973cfcdba9b39ull},
     {0x26fe7afb9bcaa3c6ull, 0xc24e0cf22bc54297ull, 0xc20f0d574bdf4b29ull,
      0x1ac8be796e8da6f3ull, 0xd57a4adbb8771695ull, 0xcff56eada3d5bcd9ull,
      0xe44d698177ce614cull, 0x3a3a3eecdfd37a53ull, 0x0910c24fa5046cebull,
@@ -206,7 +215,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0xe2536f2543c574f4ull, 0x76414629f6cf6705ull, 0x37a4643247a7bb8full,
      0x37a4643247a7bb8full, 0xd82c85ee89ec0ab6ull, 0xd82c85ee89ec0ab6ull,
      0xbea4f74aae067775ull, 0xa6e69994ac81f7b1ull, 0x37a02a1b00c9bfb3ull,
-     0x75c57e1be3a27e0dull},
+     0x75c57e1be3a27e0dull,
+     0xc9e073d0ac8d79dbull, 0x0316f3040200eef8ull, 0xc5f4a3d6659853deull},
     {0x674416b57ac02639ull, 0xbaba6bb5916fca03ull, 0x3893db7d2f5e056cull,
      0x0a989b18f642d1acull, 0x5767b6fc27c49743ull, 0xb7c8c6fda5dcda38ull,
      0x3424ac770c9a09f3ull, 0xdc8fa856587594fdull, 0x9c0552570a3b05bdull,
@@ -218,7 +228,8 @@ static const uint64_t GOLDEN[CHECKPOINT_COUNT][PATH_COUNT] = {
      0xb8edef22b8117cb9ull, 0xb8a3795249cca76full, 0x4a7fa2d0dc5ae660ull,
      0x4a7fa2d0dc5ae660ull, 0x10a49eaecb4a9da9ull, 0x10a49eaecb4a9da9ull,
      0xa72db5620c7a71ebull, 0x9850ff7acca328ffull, 0x590f3f68ed64ee82ull,
-     0xc8a60426459d556cull},
+     0xc8a60426459d556cull,
+     0x17049c7d15b59ad0ull, 0xc0ed0653b4291e18ull, 0x6e9effa36ead19fbull},
 };
 static const uint64_t GLIBC_EXP_BITS = 0x3f7eef80ull;
 #endif
@@ -537,6 +548,11 @@ TEST(tether) {
     ensure_golden("tether_velocity_verlet_2d");
     ensure_golden("tether_forest_ruth_3d");
 }
+/* McLachlan's method (added after the tables above: its own paths), uncoupled and on the springs. */
+TEST(mclachlan4) {
+    ensure_golden_2d_3d("mclachlan4");
+    ensure_golden("springs_mclachlan4_3d");
+}
 
 /* The golden table itself: a twin has its twin's hashes, the hashes are distinct otherwise (a scene that
    came to rest, or a path that ignored its method or its springs, would repeat one) and from one
@@ -651,6 +667,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(particle_step_equals_scene),
     TEST_CASE(contacts),
     TEST_CASE(tether),
+    TEST_CASE(mclachlan4),
     TEST_CASE(golden_table_is_consistent),
 };
 

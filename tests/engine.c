@@ -247,9 +247,9 @@ static void noop_callback(void *user_data, const motus_force_query *q) {
     }
 }
 
-/* 3D, RK4: (2 + 4) * 3 reals a particle, + 11 for the checked copy; contacts: 64 reals and 44 ints a particle
+/* 3D, McLachlan's method: (2 + 5) * 3 reals a particle, + 11 for the checked copy; contacts: 64 reals and 44 ints a particle
    (two pair lists), and the table and bins */
-static motus_real SCRATCH[(3 * 6 + 11 + 64 + 44 * 2) * MAX + 16384];
+static motus_real SCRATCH[(3 * 7 + 11 + 64 + 44 * 2) * MAX + 16384];
 static soa A, B, C, D, E;
 
 /* Splits [0, count) into 1..5 ranges (some may be empty) and steps them in a random order. */
@@ -388,6 +388,7 @@ TEST(paths_agree_leapfrog) { every_combination(MOTUS_LEAPFROG); }
 TEST(paths_agree_midpoint) { every_combination(MOTUS_MIDPOINT); }
 TEST(paths_agree_rk4) { every_combination(MOTUS_RK4); }
 TEST(paths_agree_forest_ruth) { every_combination(MOTUS_FOREST_RUTH); }
+TEST(paths_agree_mclachlan4) { every_combination(MOTUS_MCLACHLAN4); }
 TEST(paths_agree_exact_linear_drag) { every_combination(MOTUS_EXACT_LINEAR_DRAG); }
 
 /* Each count's particles end where the same particles end in a 1000-particle state, and where each one
@@ -759,6 +760,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(paths_agree_midpoint),
     TEST_CASE(paths_agree_rk4),
     TEST_CASE(paths_agree_forest_ruth),
+    TEST_CASE(paths_agree_mclachlan4),
     TEST_CASE(paths_agree_exact_linear_drag),
     TEST_CASE(counts_do_not_change_results),
     TEST_CASE(particle_step_equals_zeroed_scene),

@@ -188,7 +188,7 @@ methods)
     start=$(run start --frames 1 --gravity off --wind off --random off) # (--frames 0 runs until Escape)
     failed=0
     for method in semi_implicit_euler explicit_euler position_verlet velocity_verlet leapfrog midpoint rk4 \
-                  forest_ruth exact_linear_drag; do
+                  forest_ruth mclachlan4 exact_linear_drag; do
         line=$(run "method_$method" --frames 60 --gravity on --wind on --method "$method")
         echo "$line"
         all_inside "$line" || failed=1

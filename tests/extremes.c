@@ -795,7 +795,7 @@ TEST(subnormal_dt_in_substeps_still_moves) {
     /* (f) dt of one or three of the smallest subnormals, split in 4 substeps: dt/4 rounds to 0, which would
        step nothing. The step must still move a moving particle (fewer substeps), for every method. The
        methods whose stages take a fraction of the step (position Verlet and midpoint h/2, RK4 h/6,
-       Forest-Ruth theta*h/2) cannot move by less than their fraction of h: at the smallest subnormals
+       Forest-Ruth theta*h/2, McLachlan 0.405*h) cannot move by less than their fraction of h: at the smallest subnormals
        that fraction is not representable (x + v*h/2 is x), so they get 16 times the dt, which the substep
        split still rounds to a few ulps. */
     const motus_real dts_whole[2] = {REAL_TRUE_MIN, 3 * REAL_TRUE_MIN};
@@ -804,7 +804,7 @@ TEST(subnormal_dt_in_substeps_still_moves) {
     for (m = 0; m < MOTUS_METHOD_COUNT; ++m)
         for (i = 0; i < 2; ++i) {
             const int splits = m == MOTUS_POSITION_VERLET || m == MOTUS_MIDPOINT || m == MOTUS_RK4 ||
-                               m == MOTUS_FOREST_RUTH;
+                               m == MOTUS_FOREST_RUTH || m == MOTUS_MCLACHLAN4;
             const motus_real *dts = splits ? dts_split : dts_whole;
             motus_real x[2] = {0, 0}, y[2] = {0, 0}, vx[2] = {1, -1}, vy[2] = {0, 2};
             motus_scene scene;

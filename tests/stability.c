@@ -22,9 +22,9 @@
 #endif
 #define EPS ((double)MOTUS_REAL_EPSILON)
 #define CAPACITY 8
-/* Scratch for up to CAPACITY particles in 3D: (2 + 4 evaluations)*3 arrays is the most any method takes, each
+/* Scratch for up to CAPACITY particles in 3D: (2 + 5 evaluations)*3 arrays is the most any method takes, each
    rounded up to whole groups of lanes (at most 16). */
-#define SCRATCH_REALS (6 * 3 * (CAPACITY + 16))
+#define SCRATCH_REALS (7 * 3 * (CAPACITY + 16))
 
 static motus_real not_a_number(void) { return (motus_real)NAN; }
 static motus_real infinity(void) { return (motus_real)HUGE_VAL; }
@@ -179,6 +179,30 @@ TEST(limits_table) {
         /* The trace loses ~1e-15 near the root to cancellation: 1e-12 in double, rounding in float. */
         ENSURE_NEAR(motus_method_stability_limit(MOTUS_FOREST_RUTH), lo, fmax(1e-12, 2 * EPS));
     }
+    {
+        /* McLachlan's method from its product of maps on (x, v/w): drift D(a) = [[1, a*z], [0, 1]], kick
+           K(b) = [[1, 0], [-b*z, 1]], D(a1) K(b1) D(a2) K(b2) D(a3) K(b3) D(a3) K(b2) D(a2) K(b1) D(a1);
+           the limit is where the trace first reaches -2. Bisection in double between 2.8 (trace above -2)
+           and 3.0 (below). */
+        const double a[6] = {0.40518861839525227722, -0.28714404081652408900, 0.38195542242127181178,
+                             0.38195542242127181178, -0.28714404081652408900, 0.40518861839525227722};
+        const double b[5] = {-3.0 / 73.0, 17.0 / 59.0, 2179.0 / 4307.0, 17.0 / 59.0, -3.0 / 73.0};
+        double lo = 2.8, hi = 3.0;
+        int k, s;
+        for (k = 0; k < 60; ++k) {
+            const double z = 0.5 * (lo + hi);
+            double m00 = 1, m01 = 0, m10 = 0, m11 = 1, t0, t1;
+            for (s = 0; s < 6; ++s) {
+                m00 = m00 + a[s] * z * m10, m01 = m01 + a[s] * z * m11; /* D(a_s) times M */
+                if (s == 5) break;
+                t0 = m10 - b[s] * z * m00, t1 = m11 - b[s] * z * m01; /* K(b_s) times M */
+                m10 = t0, m11 = t1;
+            }
+            if (m00 + m11 > -2) lo = z;
+            else hi = z;
+        }
+        ENSURE_NEAR(motus_method_stability_limit(MOTUS_MCLACHLAN4), lo, fmax(1e-12, 2 * EPS));
+    }
 }
 
 TEST(bisect_thresholds) {
@@ -188,7 +212,8 @@ TEST(bisect_thresholds) {
         const double limit = (double)motus_method_stability_limit((motus_method)m);
         double measured;
         if (!has_finite_limit((motus_method)m)) continue;
-        measured = measured_threshold((motus_method)m, 0.5 * limit, 1.5 * limit);
+        /* up to 1.1 of the limit: McLachlan's method is stable again from 3.30 to 4.65 (3.21 grows) */
+        measured = measured_threshold((motus_method)m, 0.5 * limit, 1.1 * limit);
         printf("  %-20s %-12.7f %-12.7f %+.2e\n", method_name((motus_method)m), limit, measured,
                (measured - limit) / limit);
         ENSURE_NEAR(measured, limit, 0.01 * limit);
@@ -645,6 +670,9 @@ TEST(substepping_keeps_a_stiff_spring_bounded) {
         }
         if (m == MOTUS_VELOCITY_VERLET || m == MOTUS_LEAPFROG || m == MOTUS_RK4 || m == MOTUS_FOREST_RUTH)
             ENSURE(largest_sub < 1.001);
+        /* McLachlan's 3 substeps are at 0.6 of its limit (w*h = 1.757), where its invariant ellipse is
+           0.4% off the circle (1.0038) */
+        if (m == MOTUS_MCLACHLAN4) ENSURE(largest_sub < 1.005);
     }
 }
 

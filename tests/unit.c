@@ -1104,10 +1104,12 @@ TEST(motus_step_dt_zero_is_a_valid_no_op) {
 TEST(method_tables) {
     static const char *const names[MOTUS_METHOD_COUNT] = {"semi_implicit_euler", "explicit_euler", "position_verlet",
                                                           "velocity_verlet",     "leapfrog",       "midpoint",
-                                                          "rk4",                 "forest_ruth",    "exact_linear_drag"};
-    static const int orders[MOTUS_METHOD_COUNT] = {1, 1, 2, 2, 2, 2, 4, 4, 0};
-    static const int evaluations[MOTUS_METHOD_COUNT] = {1, 1, 1, 2, 2, 2, 4, 3, 0};
-    static const double limits[MOTUS_METHOD_COUNT] = {2, 0, 2, 2, 2, 0, 2.8284271247461900976, 1.5734019474345367, -1};
+                                                          "rk4",                 "forest_ruth",    "mclachlan4",
+                                                          "exact_linear_drag"};
+    static const int orders[MOTUS_METHOD_COUNT] = {1, 1, 2, 2, 2, 2, 4, 4, 4, 0};
+    static const int evaluations[MOTUS_METHOD_COUNT] = {1, 1, 1, 2, 2, 2, 4, 3, 5, 0};
+    static const double limits[MOTUS_METHOD_COUNT] = {2, 0, 2, 2, 2, 0, 2.8284271247461900976, 1.5734019474345367,
+                                                      2.9218392391961706, -1};
     const int bad[4] = {-1, MOTUS_METHOD_COUNT, 1000, -1000};
     int m;
     for (m = 0; m < MOTUS_METHOD_COUNT; ++m) {
