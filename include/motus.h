@@ -1792,6 +1792,22 @@ typedef motus_real motus__lane_unaligned __attribute__((vector_size(MOTUS_SIMD_B
 #endif
 #endif
 #endif
+/* Whether any lane of a mask (each lane all ones or all zeros, as comparisons make them) is set: one
+   instruction that gathers the lanes' top bits, where the portable loop moves each lane to a general
+   register (a tether's step 1.3-1.5x faster with -march=native). Not for GCC's 16-byte doubles without
+   SSE4.1: there it rebuilds the mask lane by lane first (see MOTUS__MASK_BARRIER), 13% slower than the
+   loop. */
+#if defined(__SSE2__) && MOTUS_SIMD_BYTES == 16 &&                                                              \
+    !(defined(__GNUC__) && !defined(__clang__) && !defined(__SSE4_1__) && defined(MOTUS_DOUBLE))
+typedef char motus__mask_bytes __attribute__((vector_size(16)));
+#define MOTUS__VECTOR_ANY(mask) (__builtin_ia32_pmovmskb128((motus__mask_bytes)(mask)) != 0)
+#elif defined(__AVX__) && MOTUS_SIMD_BYTES == 32
+typedef float motus__mask_bytes __attribute__((vector_size(32)));
+#define MOTUS__VECTOR_ANY(mask) (__builtin_ia32_movmskps256((motus__mask_bytes)(mask)) != 0)
+#elif defined(__AVX512F__) && MOTUS_SIMD_BYTES == 64
+#include <immintrin.h>
+#define MOTUS__VECTOR_ANY(mask) (_mm512_test_epi32_mask((__m512i)(mask), (__m512i)(mask)) != 0)
+#endif
 #else
 #define MOTUS__VECTOR 0
 typedef int motus__mask;
@@ -1893,7 +1909,9 @@ MOTUS__KI motus__lane motus__select(motus__mask mask, motus__lane a, motus__lane
 }
 /* Whether any lane of the mask is set. */
 MOTUS__KI int motus__any(motus__mask mask) {
-#if MOTUS__VECTOR
+#if defined(MOTUS__VECTOR_ANY)
+    return MOTUS__VECTOR_ANY(mask);
+#elif MOTUS__VECTOR
     int l, any = 0;
     for (l = 0; l < MOTUS__LANES; ++l) any |= mask[l] != 0;
     return any;
