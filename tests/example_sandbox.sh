@@ -10,7 +10,7 @@
 #             (mean_vx > 20 px/s and mean_x over 100 px larger; without wind |mean_vx| < 10 px/s), that the
 #             same options give the same line, and that the screenshot (OUTPUT_DIR/sandbox.png) is an 800x600
 #             picture of particles in every hue, more of them in the lower half (gravity).
-#   methods   60 frames with gravity, wind and kicks under each of the nine methods (--method): each run
+#   methods   60 frames with gravity, wind and kicks under each of the ten methods (--method): each run
 #             keeps every particle inside, prints its method, and gravity and wind move the mean the same
 #             way under every method (mean_y and mean_x over 50 px past those after one calm frame).
 #   collisions
