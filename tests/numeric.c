@@ -470,7 +470,7 @@ TEST(order_forest_ruth_drag_is_first_order) {
     ensure_order_is(MOTUS_FOREST_RUTH, PROBLEM_GRAVITY_LINEAR_DRAG, 100, 100, 1);
 }
 
-/* McLachlan's error is ~500x Forest-Ruth's smaller on the oscillator (see >>methods): its runs start
+/* McLachlan's error is ~440x Forest-Ruth's smaller on the oscillator (see >>methods): its runs start
    coarser, so that the error stays above float's rounding for the halvings measured. */
 TEST(order_mclachlan4) {
     ensure_order(MOTUS_MCLACHLAN4, PROBLEM_HARMONIC_OSCILLATOR, 10, 10);
