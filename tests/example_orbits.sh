@@ -4,8 +4,8 @@
 #   headless  300 and then 600 frames (2.5 and 5 orbits at T/120), the second with a screenshot. Checks that
 #             explicit Euler gains energy (its energy error is positive and grows from frame 300 to 600) and
 #             ends more than 10 times further off than every symplectic method (semi-implicit Euler,
-#             velocity Verlet, Forest-Ruth); that RK4 and Forest-Ruth end closer to the exact position than
-#             semi-implicit Euler; and that the screenshot is 800x600 with each method's colour drawn in the
+#             velocity Verlet, Forest-Ruth, McLachlan); that RK4, Forest-Ruth and McLachlan end closer to the
+#             exact position than semi-implicit Euler; and that the screenshot is 800x600 with each method's colour drawn in the
 #             orbit view (above the legend).
 #   key_space holds SPACE with real key events (xdotool), then Escape: the run must end paused, with paused
 #             frames counted and fewer steps than frames.
@@ -33,24 +33,26 @@ headless)
     semi=$(field energy_error "$(method_line semi_implicit_euler "$out/orbits_600.log")")
     verlet=$(field energy_error "$(method_line velocity_verlet "$out/orbits_600.log")")
     ruth=$(field energy_error "$(method_line forest_ruth "$out/orbits_600.log")")
+    mclachlan=$(field energy_error "$(method_line mclachlan4 "$out/orbits_600.log")")
     semi_x=$(field position_error "$(method_line semi_implicit_euler "$out/orbits_600.log")")
     rk4_x=$(field position_error "$(method_line rk4 "$out/orbits_600.log")")
     ruth_x=$(field position_error "$(method_line forest_ruth "$out/orbits_600.log")")
-    awk -v e300="$euler_300" -v e="$euler" -v s="$semi" -v v="$verlet" -v f="$ruth" \
-        -v sx="$semi_x" -v rx="$rk4_x" -v fx="$ruth_x" 'function abs(x) { return x < 0 ? -x : x }
+    mclachlan_x=$(field position_error "$(method_line mclachlan4 "$out/orbits_600.log")")
+    awk -v e300="$euler_300" -v e="$euler" -v s="$semi" -v v="$verlet" -v f="$ruth" -v m="$mclachlan" \
+        -v sx="$semi_x" -v rx="$rk4_x" -v fx="$ruth_x" -v mx="$mclachlan_x" 'function abs(x) { return x < 0 ? -x : x }
     BEGIN {
         failed = 0
         printf "explicit_euler energy error: %g at frame 300, %g at frame 600\n", e300, e
         if (!(e300 > 0 && e > e300)) { print "FAILED: explicit Euler should gain energy, more and more"; failed = 1 }
-        worst = abs(s); if (abs(v) > worst) worst = abs(v); if (abs(f) > worst) worst = abs(f)
+        worst = abs(s); if (abs(v) > worst) worst = abs(v); if (abs(f) > worst) worst = abs(f); if (abs(m) > worst) worst = abs(m)
         printf "largest symplectic energy error %g: explicit Euler is %.0fx that\n", worst, abs(e) / worst
         if (!(abs(e) > 10 * worst)) { print "FAILED: explicit Euler should be > 10x off in energy"; failed = 1 }
-        printf "position errors: semi_implicit_euler %g, rk4 %g, forest_ruth %g\n", sx, rx, fx
-        if (!(rx < sx && fx < sx)) { print "FAILED: RK4 and Forest-Ruth should end closer than semi-implicit Euler"; failed = 1 }
+        printf "position errors: semi_implicit_euler %g, rk4 %g, forest_ruth %g, mclachlan4 %g\n", sx, rx, fx, mx
+        if (!(rx < sx && fx < sx && mx < sx)) { print "FAILED: RK4, Forest-Ruth and McLachlan should end closer than semi-implicit Euler"; failed = 1 }
         exit failed
     }'
-    # The colours come from the program's own lines (rgb=R,G,B); the legend starts at y = 446.
-    python3 - "$png" 446 $(sed -n 's/^method=\([a-z_0-9]*\) .* rgb=\([0-9,]*\).*/\1=\2/p' "$out/orbits_600.log") <<'EOF'
+    # The colours come from the program's own lines (rgb=R,G,B); the legend starts at y = 424.
+    python3 - "$png" 424 $(sed -n 's/^method=\([a-z_0-9]*\) .* rgb=\([0-9,]*\).*/\1=\2/p' "$out/orbits_600.log") <<'EOF'
 import struct, sys, zlib
 
 path, view_bottom, wanted = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
