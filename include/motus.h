@@ -569,9 +569,10 @@ MOTUS_API motus_result motus_state_check(const motus_scene *scene, const motus_s
 MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus_state *state, void *scratch,
                                            size_t scratch_bytes, motus_contact_pair *pairs, int capacity, int *found);
 /* The largest dt the scene's springs and drags allow for its method (Gershgorin bound, see >>methods);
-   +Inf when nothing limits it. scratch as for motus_step. MOTUS_ERROR_OVERFLOW (and *max_dt untouched)
-   where w^2 = k*(1/m), summed over a particle's springs, or the damping rate passes the largest real
-   (float: 3.4e38/s^2, a dt below 1e-19 s); a large drag or speed alone is scaled, not refused. */
+   +Inf when nothing limits it. scratch as for motus_step. Where w^2 = k*(1/m), summed over a particle's
+   springs, or the damping rate passes the largest real, the rates are scaled, not refused: a tether of
+   1e30 N/m on 1e-10 kg in float (w^2 = 1e40/s^2) gets its 2e-20 s. MOTUS_ERROR_OVERFLOW (and *max_dt
+   untouched) only where a speed |v| itself does. */
 MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const motus_state *state,
                                                  motus_real *max_dt, void *scratch, size_t scratch_bytes);
 
@@ -4548,37 +4549,60 @@ MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const
             }
             if (speed > fastest) fastest = speed;
         }
-    if (scene->spring_count > 0 || scene->tether_stiffness != 0) {
+    /* The rates in units of 1/q, q a power of two: w^2*q^2 (each factor of k*(1/m) times q) and the half
+       decay rate times q, so that a dt is answered wherever it is representable. q = 1 unless a product or
+       a sum overflowed (then the same bits as unscaled); each retry takes q a quarter of the exponent range
+       lower (2^-32 in float), which products of reals up to the largest and sums over a particle's springs
+       cannot outrun in three retries: a tether of 1e30 N/m on 1e-10 kg in float has w^2 = 1e40, past the
+       largest real, and its dt is 2e-20 s. The dt is then dt(scaled rates)*q. */
+    {
+#ifdef MOTUS_DOUBLE
+        const motus_real scale_step = 8.6361685550944446e-78; /* 2^-256 */
+#else
+        const motus_real scale_step = 2.32830644e-10f; /* 2^-32 */
+#endif
         const motus_real uniform = scene->mass > 0 ? MOTUS_R(1.0) / scene->mass : MOTUS_R(1.0);
         const int springs = scene->spring_count > 0;
+        motus_real q = 1, dt;
 #define MOTUS__W(p) (state->inverse_mass ? state->inverse_mass[(ptrdiff_t)(p) * stride] : uniform)
-        for (i = 0; springs && i < 2 * count; ++i) sums[i] = 0;
-        for (k = 0; k < scene->spring_count; ++k) {
-            const motus_spring *s = &scene->springs[k];
-            const motus_real both = MOTUS__W(s->a) + (s->b < 0 ? 0 : MOTUS__W(s->b));
-            sums[2 * s->a] += s->stiffness * both;
-            sums[2 * s->a + 1] += s->damping * both;
-            if (s->b >= 0) {
-                sums[2 * s->b] += s->stiffness * both;
-                sums[2 * s->b + 1] += s->damping * both;
+        for (;;) {
+            omega_squared = 0, spring_decay = 0;
+            if (springs || scene->tether_stiffness != 0) {
+                for (i = 0; springs && i < 2 * count; ++i) sums[i] = 0;
+                for (k = 0; k < scene->spring_count; ++k) {
+                    const motus_spring *s = &scene->springs[k];
+                    const motus_real both = MOTUS__W(s->a) + (s->b < 0 ? 0 : MOTUS__W(s->b));
+                    const motus_real stiffness = (s->stiffness * q) * (both * q), damping = (s->damping * q) * both;
+                    sums[2 * s->a] += stiffness;
+                    sums[2 * s->a + 1] += damping;
+                    if (s->b >= 0) {
+                        sums[2 * s->b] += stiffness;
+                        sums[2 * s->b + 1] += damping;
+                    }
+                }
+                for (i = 0; i < count; ++i) {
+                    /* the tether is a spring to a fixed end: k*(1/m) on the diagonal only */
+                    const motus_real row = (springs ? sums[2 * i] : 0) + (scene->tether_stiffness * q) * (MOTUS__W(i) * q);
+                    if (MOTUS__W(i) == 0) continue; /* nothing moves it: its column bounds no motion */
+                    if (row > omega_squared) omega_squared = row;
+                    if (springs && sums[2 * i + 1] > spring_decay) spring_decay = sums[2 * i + 1];
+                }
             }
-        }
-        for (i = 0; i < count; ++i) {
-            /* the tether is a spring to a fixed end: k*(1/m) on the diagonal only */
-            const motus_real row = (springs ? sums[2 * i] : 0) + scene->tether_stiffness * MOTUS__W(i);
-            if (MOTUS__W(i) == 0) continue; /* nothing moves it: its column bounds no motion */
-            if (row > omega_squared) omega_squared = row;
-            if (springs && sums[2 * i + 1] > spring_decay) spring_decay = sums[2 * i + 1];
+            /* Half the decay rate: quadratic drag's rate at the fastest speed is 2*c*|v|, so its half is c*|v|
+               (the halves are exact: the same bits as halving the sum, without its overflow). */
+            half_decay = MOTUS_R(0.5) * (scene->linear_drag * q) + (scene->quadratic_drag * q) * fastest +
+                         MOTUS_R(0.5) * spring_decay;
+            if (motus_real_is_finite(omega_squared) && motus_real_is_finite(half_decay)) break;
+            q = q * scale_step;
+            if (q == 0) return MOTUS_ERROR_OVERFLOW; /* not reached by finite inputs (see above) */
         }
 #undef MOTUS__W
+        dt = motus__stable_dt(scene->method, omega_squared, half_decay);
+        /* a dt below the smallest subnormal real: not representable, refused (not answered with 0, which
+           means that no step is stable) */
+        if (dt > 0 && dt * q == 0) return MOTUS_ERROR_OVERFLOW;
+        *max_dt = dt * q;
     }
-    /* Half the decay rate: quadratic drag's rate at the fastest speed is 2*c*|v|, so its half is c*|v| (the
-       halves are exact: the same bits as halving the sum, without its overflow). */
-    half_decay = MOTUS_R(0.5) * scene->linear_drag + scene->quadratic_drag * fastest + MOTUS_R(0.5) * spring_decay;
-    /* w^2 (a row's k*(1/m) summed) or the decay rate beyond the largest real: refused, not answered with a
-       dt of 0 (a tether of 1e30 N/m on 1e-10 kg in float); the dt it stands for is below 1e-19 s. */
-    if (!motus_real_is_finite(omega_squared) || !motus_real_is_finite(half_decay)) return MOTUS_ERROR_OVERFLOW;
-    *max_dt = motus__stable_dt(scene->method, omega_squared, half_decay);
     return MOTUS_OK;
 }
 

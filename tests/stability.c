@@ -519,7 +519,9 @@ TEST(scene_max_stable_dt_counts_the_tether) {
 /* Where an intermediate overflows but the dt does not: a drag or a speed so large that (c/2)^2 or |v|^2
    passes the largest real gives its dt (2/(2*c/2) = 2/c for semi-implicit Euler alone, from the decay rate
    alone), not 0 (the answer was 0 with MOTUS_OK, then MOTUS_ERROR_TOO_STIFF from motus_substeps_for for any
-   dt). Where w^2 = k*(1/m) itself passes it, MOTUS_ERROR_OVERFLOW and *max_dt untouched, never a dt of 0. */
+   dt). Where w^2 = k*(1/m) itself passes it, or a particle's sum over its springs does, the rates are
+   scaled and the dt answered (it was MOTUS_ERROR_OVERFLOW: the dt of a tether of 1e30 N/m on 1e-10 kg in
+   float, 2e-20 s, is a representable real). */
 TEST(scene_max_stable_dt_scales_what_overflows) {
 #ifdef MOTUS_DOUBLE
     const motus_real big = (motus_real)1e160, tiny = (motus_real)1e-300, stiff = (motus_real)1e300;
@@ -565,13 +567,32 @@ TEST(scene_max_stable_dt_scales_what_overflows) {
         c.scene.method = MOTUS_SEMI_IMPLICIT_EULER;
         c.v[0][1] = big;
     }
-    /* w^2 past the largest real: refused, dt untouched */
+    /* w^2 = k*(1/m) past the largest real (k = 1/m = stiff, so w = stiff): every method's limit/w */
     c.scene.quadratic_drag = 0;
     c.scene.tether_stiffness = stiff;
     c.inverse_mass[1] = c.inverse_mass[2] = stiff;
-    dt = 42;
-    ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &dt, NULL, 0), MOTUS_ERROR_OVERFLOW);
-    ENSURE(dt == 42);
+    {
+        int m;
+        for (m = 0; m < MOTUS_METHOD_COUNT; ++m) {
+            const double expected = (double)motus_method_stability_limit((motus_method)m) / (double)stiff;
+            if (m == MOTUS_EXACT_LINEAR_DRAG) continue; /* takes no tether */
+            c.scene.method = (motus_method)m;
+            dt = 42;
+            ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &dt, NULL, 0), MOTUS_OK);
+            ENSURE_NEAR(dt, expected, 4 * EPS * expected); /* 0 for explicit Euler and midpoint */
+        }
+    }
+    /* Each spring's k*(1/m_a + 1/m_b) finite, their sum on the middle particle not: 0 - 1 - 2, 1/m = 0, 1, 1,
+       k = half the largest real: rows k*1 + k*2 = 3k (middle) and 2k, w^2 = 3k, dt = 2/sqrt(3k) */
+    {
+        const motus_real half_largest = REAL_MAX / 2;
+        motus_real scratch[2 * 3];
+        chain_init(&c, MOTUS_SEMI_IMPLICIT_EULER, 3, half_largest);
+        dt = 42;
+        ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &dt, scratch, sizeof scratch), MOTUS_OK);
+        ENSURE_NEAR(dt, 2 / (sqrt(3.0) * sqrt((double)half_largest)),
+                    8 * EPS * (2 / (sqrt(3.0) * sqrt((double)half_largest))));
+    }
 }
 
 TEST(scene_max_stable_dt_rejects_bad_input) {
