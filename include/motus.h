@@ -1712,8 +1712,8 @@ MOTUS__QUIET_BEGIN
 #pragma GCC optimize("no-tree-partial-pre")
 #endif
 /* GCC's second instruction scheduling (after register allocation) off for the engine on x86, where an
-   out-of-order core reorders by itself: the unit compiled in 2.88 s where it took 3.15 (gcc 12 -O2, Zen 4,
-   best of 5), and the kernels ran as fast (2D and 3D, float and double, -O2 and -O3 -march=native: each
+   out-of-order core reorders by itself: the unit compiled in 2.84-2.88 s where it took 2.99-3.15 (gcc 12
+   -O2, Zen 4, best of 5, two sessions of runs), and the kernels ran as fast (2D and 3D, float and double, -O2 and -O3 -march=native: each
    within 3%). Scheduling moves no arithmetic: the golden hashes hold. (The "expensive optimizations" were
    worth as much compile time, but without them some kernels ran 5-16% slower: kept.) */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__OPTIMIZE__) && (defined(__x86_64__) || defined(__i386__))
