@@ -4507,6 +4507,7 @@ MOTUS_API motus_result motus_find_contacts(const motus_scene *scene, const motus
 MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const motus_state *state,
                                                  motus_real *max_dt, void *scratch, size_t scratch_bytes) {
     motus_real omega_squared = 0, spring_decay = 0, fastest = 0, half_decay, *sums = (motus_real *)scratch;
+    motus_real fastest_half = 0; /* where some |v| passes the largest real (it is then the fastest): |v|/2 */
     motus_result result;
     ptrdiff_t stride;
     int dims = 2, i, d, k, count;
@@ -4545,7 +4546,11 @@ MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const
                     speed2 += u * u;
                 }
                 speed = largest * MOTUS_SQRT(speed2);
-                if (!motus_real_is_finite(speed)) return MOTUS_ERROR_OVERFLOW; /* |v| itself */
+                if (!motus_real_is_finite(speed)) { /* |v| itself (up to sqrt(3) of the largest real): its half */
+                    const motus_real half = largest * (MOTUS_R(0.5) * MOTUS_SQRT(speed2));
+                    if (half > fastest_half) fastest_half = half;
+                    continue;
+                }
             }
             if (speed > fastest) fastest = speed;
         }
@@ -4590,7 +4595,9 @@ MOTUS_API motus_result motus_scene_max_stable_dt(const motus_scene *scene, const
             }
             /* Half the decay rate: quadratic drag's rate at the fastest speed is 2*c*|v|, so its half is c*|v|
                (the halves are exact: the same bits as halving the sum, without its overflow). */
-            half_decay = MOTUS_R(0.5) * (scene->linear_drag * q) + (scene->quadratic_drag * q) * fastest +
+            half_decay = MOTUS_R(0.5) * (scene->linear_drag * q) +
+                         (fastest_half > 0 ? ((scene->quadratic_drag * q) * 2) * fastest_half
+                                           : (scene->quadratic_drag * q) * fastest) +
                          MOTUS_R(0.5) * spring_decay;
             if (motus_real_is_finite(omega_squared) && motus_real_is_finite(half_decay)) break;
             q = q * scale_step;

@@ -545,6 +545,23 @@ TEST(scene_max_stable_dt_scales_what_overflows) {
         const double expected = 2 / (2 * (double)tiny * (double)big * sqrt(2.0));
         ENSURE_NEAR(dt, expected, 8 * EPS * expected);
     }
+    /* |v| itself past the largest real (each component 7/8 of it, |v| = 1.24 of it in 2D): c = 1e-3, so c*|v|
+       and the dt are representable; it was refused with OVERFLOW. A slower particle beside it changes
+       nothing */
+    {
+        const motus_real seven_eighths = REAL_MAX / 8 * 7;
+        /* 2 / (2*c*|v|), formed so that |v| (past the largest double too) is never formed */
+        const double expected = 1 / (1e-3 * sqrt(2.0)) / (double)seven_eighths;
+        c.scene.quadratic_drag = MOTUS_R(1e-3);
+        c.v[0][1] = seven_eighths, c.v[1][1] = -seven_eighths;
+        c.v[0][2] = big, c.v[1][2] = 0;
+        dt = 42;
+        ENSURE_EQ_INT(motus_scene_max_stable_dt(&c.scene, &c.state, &dt, NULL, 0), MOTUS_OK);
+        ENSURE_NEAR(dt, expected, 8 * EPS * expected + REAL_MIN_POSITIVE);
+        c.v[0][2] = 0;
+        c.v[0][1] = big, c.v[1][1] = -big;
+        c.scene.quadratic_drag = tiny;
+    }
     /* half the decay rate just under the largest real (0.99 of it: c = 1.98 at |v| = half the largest real),
        so that alpha*c/2 overflows for RK4 (alpha 1.0155) and Forest-Ruth (alpha 2): every method's dt is a
        quarter of the one at a quarter of the speed, positive (it was NaN with MOTUS_OK for those two) */
