@@ -64,10 +64,11 @@ asan_exclude='^(determinism\.(matrix|contracted)\.|compile\.(gcc|clang|g\+\+|cla
 #   and 3 threads (valgrind runs one thread at a time: about an hour); they run under ASan, and under
 #   ThreadSanitizer in the normal tree (threads.tsan).
 # - render.*, but for three: OSMesa's llvmpipe under valgrind takes 30-120 s a test (760 s of CPU for the ten
-#   float ones on a Zen 3), and what it checks there is mostly Mesa's rasteriser. Every render test runs the
-#   same harness (tests/render.c): three of them run it under valgrind, one per kind of motus call they make
-#   (render.wsad_directions the 2D particle, render.projectile_3d_drawn_in_the_xy_plane the 3D one,
-#   render.head_on_between_two_frames a contact step); the same calls run under valgrind in the unit.*,
+#   float ones on a Zen 3), and what it checks there is mostly Mesa's rasteriser. Every render test draws through
+#   the same harness (tests/support/motus_canvas.c, from render.c or render_contacts.c): three run it under
+#   valgrind, one per kind of motus call (render.wsad_directions the 2D particle and
+#   render.projectile_3d_drawn_in_the_xy_plane the 3D one, from render.c; render.head_on_between_two_frames a
+#   contact step, from render_contacts.c); the same calls run under valgrind in the unit.*,
 #   numeric.* and contacts.* tests; all render tests run natively and under ASan.
 # Script-driven tests (compile.gcc.* ...) run with --trace-children: valgrind follows the programs the script
 # starts from the build tree and skips system programs (compilers, shells' tools) by the skip patterns.
