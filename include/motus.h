@@ -74,13 +74,17 @@
    - Forces accumulate until you clear them. The step does not clear them: a constant force may be added once.
    - Every function that can be handed bad input returns a motus_result; on any result other than MOTUS_OK
      nothing was written, with one exception: without MOTUS_CHECKED (>>config), motus_step (and
-     motus_step_range) on particle
-     data that is NaN or Inf, or that overflows, has written the step when it returns MOTUS_ERROR_NOT_FINITE
-     (it finds out while it writes, to stay a single pass), and it does not look for a negative inverse
-     mass (motus_state_check and MOTUS_CHECKED do). dt == 0 is a valid step of
-     nothing (NaN or Inf in the state is still reported); a count of 0 is valid and does nothing.
+     motus_step_range) on particle data that is NaN or Inf, or that overflows, has written the step when
+     it returns MOTUS_ERROR_NOT_FINITE (it finds out while it writes, to stay a single pass; a particle
+     whose force or inverse mass is NaN or Inf is found before and left as it was, except in scenes with
+     springs or a callback), and it does not look for a negative inverse mass (motus_state_check and
+     MOTUS_CHECKED do). dt == 0 is a valid step of nothing (NaN or Inf in the state is still reported); a
+     count of 0 is valid and does nothing.
      motus_result_string() turns a result into a sentence, motus_scene_check() names the scene field at
      fault, motus_state_check() the particle and field.
+   - A step whose F*(1/m) passes the largest real while its result fits (a huge force on a light particle
+     over a short dt) is taken: the particle is stepped again in scaled units (THE RESCUE, in >>inline).
+     Other such intermediates are reported as an overflow (README, "what is scaled").
    - Zero means default in every description: a zeroed motus_scene is a valid scene with no forces.
    - No compound literals in the header, so it also compiles as C++.
 
@@ -844,6 +848,64 @@ MOTUS_DEF int motus__finite_in(motus_vec3 v, int dims) {
 MOTUS_DEF motus_real motus__kick(motus_real v, motus_real force, motus_real inverse_mass, motus_real dt) {
     return v + MOTUS__ROUND(((MOTUS__ROUND(force * inverse_mass) + 0) - MOTUS__ROUND(v * 0)) * dt);
 }
+/* THE RESCUE. A step whose inputs are finite can overflow where its result does not: F*(1/m) past the
+   largest real while a*dt is not (1e38 N on 0.01 kg for 1 ms in float). A particle whose F*(1/m) is not
+   finite is stepped again in time units of 2^-s seconds: velocities times 2^-s, accelerations times 2^-2s
+   (F*(1/m) as (F*2^-s)*((1/m)*2^-s), gravity, the tether's and the attractor's strengths likewise), drag
+   rates times 2^-s, h times 2^s, and the velocity times 2^s at the end. A power of two scales exactly, so
+   where nothing under- or overflows this is the same computation, rounding for rounding; it is tried at
+   s = 4, 16 and 64 (in double also 256 and 512), and the first s at which the step is finite is kept: the
+   smallest that brings the large values in range, so that the small ones (a gravity of 1e-30 beside the
+   force that overflowed) keep their digits. Where no s gives a finite step, the result itself does not
+   fit: OVERFLOW. The engine takes the same steps (motus__group_rescue): the paths agree bit for bit.
+   The trigger is F*(1/m) alone, tested where the forces are loaded: the fast kernels can afford a test
+   there and not one of their results (see the kernel). Other intermediates (RK4's sum of four velocities
+   near the largest real, a tether's k*dx) are not rescued. */
+/* Out of line and cold: what the common paths below reach only for rare input (see there). */
+#if defined(__GNUC__) || defined(__clang__)
+#define MOTUS__RARE static __attribute__((noinline, cold, unused))
+#define MOTUS__LIKELY(x) __builtin_expect(!!(x), 1)
+#else
+#define MOTUS__RARE static
+#define MOTUS__LIKELY(x) (x)
+#endif
+#ifdef MOTUS_DOUBLE
+#define MOTUS__RESCUE_LEVELS 5
+#else
+#define MOTUS__RESCUE_LEVELS 3
+#endif
+/* 2^-s at a level of the rescue: 0.5 squared 2, 4, 6, 8 or 9 times (s = 4, 16, 64, 256, 512), exact. */
+MOTUS_DEF motus_real motus__rescue_down(int level) {
+    motus_real down = MOTUS_R(0.5);
+    int squarings = level < 3 ? 2 * level + 2 : level + 5;
+    while (squarings-- > 0) down *= down;
+    return down;
+}
+MOTUS__RARE motus_result motus__step_rescaled(motus_vec3 *position, motus_vec3 *velocity, motus_vec3 force,
+                                         motus_real inverse_mass, motus_real dt, int dims) {
+    int level;
+    for (level = 0; level < MOTUS__RESCUE_LEVELS; ++level) {
+        const motus_real down = motus__rescue_down(level), up = MOTUS_R(1.0) / down, h = dt * up;
+        const motus_real scaled_inverse_mass = inverse_mass * down;
+        motus_vec3 v = motus_v3(velocity->x * down, velocity->y * down, velocity->z * down), x;
+        if (inverse_mass != 0) {
+            v.x = motus__kick(v.x, force.x * down, scaled_inverse_mass, h);
+            v.y = motus__kick(v.y, force.y * down, scaled_inverse_mass, h);
+            v.z = dims == 3 ? motus__kick(v.z, force.z * down, scaled_inverse_mass, h) : 0;
+        }
+        x.x = position->x + MOTUS__ROUND(v.x * h);
+        x.y = position->y + MOTUS__ROUND(v.y * h);
+        x.z = dims == 3 ? position->z + MOTUS__ROUND(v.z * h) : 0;
+        v = motus_v3(v.x * up, v.y * up, v.z * up);
+        if (inverse_mass == 0) v = *velocity;
+        if (motus__finite_in(x, dims) & motus__finite_in(v, dims)) {
+            *velocity = v;
+            *position = x;
+            return MOTUS_OK;
+        }
+    }
+    return MOTUS_ERROR_OVERFLOW;
+}
 MOTUS_DEF motus_result motus__step(motus_vec3 *position, motus_vec3 *velocity, motus_vec3 force,
                                    motus_real inverse_mass, motus_real dt, int dims) {
     motus_vec3 v, x;
@@ -865,7 +927,11 @@ MOTUS_DEF motus_result motus__step(motus_vec3 *position, motus_vec3 *velocity, m
        too, since an immovable particle does not read it (its NaN must still be reported, as the engine's). */
     if (!(motus__finite_in(x, dims) & motus__finite_in(force, dims))) {
         motus_result state = motus__check(*position, *velocity, force, inverse_mass);
-        return state != MOTUS_OK ? state : MOTUS_ERROR_OVERFLOW;
+        if (state != MOTUS_OK) return state;
+        /* F*(1/m) past the largest real: THE RESCUE */
+        if (!motus__finite_in(motus_v3(force.x * inverse_mass, force.y * inverse_mass, force.z * inverse_mass), dims))
+            return motus__step_rescaled(position, velocity, force, inverse_mass, dt, dims);
+        return MOTUS_ERROR_OVERFLOW;
     }
     *velocity = v;
     *position = x;
@@ -968,13 +1034,6 @@ MOTUS_DEF motus_result motus__bounce(motus_vec3 *x, motus_vec3 *v, motus_vec3 lo
    - each check reads what the arithmetic already has (the doubled bits of a damped velocity component
      say in one compare that it is finite and not below the rest speed);
    - the stores go through MOTUS__OPAQUE_POINTER (below). */
-#if defined(__GNUC__) || defined(__clang__)
-#define MOTUS__RARE static __attribute__((noinline, cold, unused))
-#define MOTUS__LIKELY(x) __builtin_expect(!!(x), 1)
-#else
-#define MOTUS__RARE static
-#define MOTUS__LIKELY(x) (x)
-#endif
 /* A value the compiler must take as it is. A call reads what the call before it wrote a moment ago (the
    step reads the force add_force wrote, damping the velocity the step wrote); a vectoriser (GCC's, on at
    -O2 since GCC 12; Clang's) loads two neighbours as one pair, which the CPU cannot forward from two
@@ -2019,6 +2078,7 @@ typedef struct motus__job {
     /* coupled: the recorded stage state and the stage forces, plain arrays over the whole state */
     motus_real *stage_x[3], *stage_v[3];
     const motus_real *stage_force[MOTUS__MAX_EVALUATIONS][3];
+    int rescuing; /* a job in the rescue's units (motus__group_rescue): no rescue in it */
 } motus__job;
 
 /* The terms with a square root and a division, out of line: a call per group of particles is small next
@@ -2415,6 +2475,13 @@ MOTUS__KI void motus__group_load(const motus__job *j, motus__group *g, int i, in
 }
 /* The inputs the step may not show in its results: a NaN or Inf force on an immovable particle (its
    acceleration is 0 whatever the force), an inverse mass that is NaN, or negative. */
+/* Whether a lane's F*(1/m) is not finite: b - b is 0 for a finite b and NaN for the rest, and a sum of such
+   zeros cannot overflow. */
+MOTUS__KI int motus__base_overflowed(const motus__lane *base, const int dims) {
+    motus__lane zeros = (base[0] - base[0]) + (base[1] - base[1]);
+    if (dims == 3) zeros = zeros + (base[2] - base[2]);
+    return motus__any((motus__mask)(zeros != zeros));
+}
 MOTUS__KI void motus__group_check_inputs(const motus__job *j, const motus__group *g, motus__lane *check,
                                          const int dims, const unsigned shape) {
     const unsigned t = MOTUS__TERMS(j, shape);
@@ -2488,7 +2555,7 @@ MOTUS__KI void motus__group_finish(const motus__job *j, motus__group *g, const i
    nonzero if the new state's check sum is not finite. Fast kernels (plain arrays, no coupling) take whole
    groups with plain vector loads and hand the rest to the general kernel. */
 #define MOTUS__KERNEL_OF(method)                                                                                 \
-    MOTUS__KI int motus__kernel_##method(const motus__job *job, int first, int end, const int dims,              \
+    MOTUS__KI long long motus__kernel_##method(const motus__job *job, int first, int end, const int dims,        \
                                          const int contiguous, const int coupled, const unsigned shape) {        \
         /* A local copy: the state arrays the kernel stores to could alias the job's reals in memory, which      \
            would make the compiler reload every constant after every store; they cannot alias a local. */        \
@@ -2508,7 +2575,14 @@ MOTUS__KI void motus__group_finish(const motus__job *j, motus__group *g, const i
                 if (MOTUS__TERMS(j, shape) & MOTUS__T_MASS) MOTUS__PREFETCH(j->inverse_mass + ahead);            \
             }                                                                                                    \
             motus__group_load(j, &g, i, n, dims, contiguous, shape);                                             \
-            motus__group_check_inputs(j, &g, &check, dims, shape);                                               \
+            /* F*(1/m) not finite (past the largest real, or F or 1/m not finite): the group is left to          \
+               motus__group_rescue (THE RESCUE), after this loop; a call in it, taken or not, would cost the     \
+               loop every vector register the call may use. Tested on the loads: a test of the results,          \
+               which come last, cost RK4 20% (Zen 3). Not in a coupled scene (its passes take whole groups). */  \
+            if ((MOTUS__TERMS(j, shape) & (MOTUS__T_FORCES | MOTUS__T_MASS)) &&                                  \
+                !(MOTUS__TERMS(j, shape) & MOTUS__T_COUPLED) && motus__base_overflowed(g.base, dims))            \
+                break;                                                                                           \
+            if (!contiguous) motus__group_check_inputs(j, &g, &check, dims, shape); /* the fast: in the test */  \
             for (s = 0; s < j->substeps; ++s) {                                                                  \
                 MOTUS__EACH_D(g.v_start[d] = g.v[d];);                                                           \
                 if (motus__##method(j, g.x, g.v, g.base, g.inverse_mass, g.movable, dims, coupled, shape, i, n)) \
@@ -2517,7 +2591,9 @@ MOTUS__KI void motus__group_finish(const motus__job *j, motus__group *g, const i
             }                                                                                                    \
             if (s == j->substeps) motus__group_finish(j, &g, dims, contiguous, shape);                           \
         }                                                                                                        \
-        if (end_here < end) broken = motus__general(j, end_here, end);                                           \
+        if (i < end_here) /* stopped: the group at i for motus__group_rescue */                                  \
+            return MOTUS__STOPPED_AT(i) | !motus_real_is_finite(motus__lane_sum(check));                         \
+        if (end_here < end) broken = motus__general(job, end_here, end); /* job: the local copy never escapes */ \
         return broken | !motus_real_is_finite(motus__lane_sum(check));                                           \
     }                                                                                                            \
     MOTUS__FASTS(method)
@@ -2526,8 +2602,12 @@ MOTUS__KI void motus__group_finish(const motus__job *j, motus__group *g, const i
     MOTUS__FAST(method, 2, 0, MOTUS__SHAPE_ALL) MOTUS__FAST(method, 2, 1, MOTUS__SHAPE_GRAVITY)                   \
     MOTUS__FAST(method, 3, 0, MOTUS__SHAPE_ALL) MOTUS__FAST(method, 3, 1, MOTUS__SHAPE_GRAVITY)
 #define MOTUS__FAST(method, dims, index, shape)                                                                  \
-    static int motus__fast##dims##_##index##_##method(const motus__job *j, int first, int end) {                 \
+    static MOTUS__NOINLINE long long motus__fast_body##dims##_##index##_##method(const motus__job *j, int first, \
+                                                                                 int end) {                     \
         return motus__kernel_##method(j, first, end, dims, 1, 0, shape);                                         \
+    }                                                                                                            \
+    static int motus__fast##dims##_##index##_##method(const motus__job *j, int first, int end) {                 \
+        return motus__fast_loop(j, first, end, motus__fast_body##dims##_##index##_##method);                     \
     }
 #else
 #define MOTUS__FASTS(method)
@@ -2553,7 +2633,29 @@ MOTUS__KI int motus__any_method(MOTUS__METHOD_ARGS) {
     }
 #undef MOTUS__CALL
 }
-static int motus__general(const motus__job *j, int first, int end);
+static MOTUS__NOINLINE int motus__general(const motus__job *j, int first, int end);
+static MOTUS__NOINLINE int motus__group_rescue(const motus__job *j, int first, int n);
+/* A kernel's result: bit 0, a value not finite; from bit 1 up, 1 + the index of the group it stopped at. */
+#define MOTUS__STOPPED_AT(i) (((long long)(i) + 1) * 2)
+#if MOTUS__FAST_KERNELS
+/* A fast kernel from first to end: where it stops at a group whose F*(1/m) is not finite, motus__group_rescue
+   takes that group and the kernel goes on after it. A loop of calls, out of the kernel, so that the kernel's
+   own loop stays the one loop of its function (nested in another, GCC placed it unaligned and it ran up to
+   30% slower on Zen 3). */
+static MOTUS__NOINLINE int motus__fast_loop(const motus__job *j, int first, int end,
+                                          long long (*body)(const motus__job *, int, int)) {
+    int broken = 0;
+    long long result;
+    for (;;) {
+        result = body(j, first, end);
+        broken |= (int)(result & 1);
+        if (result < 2) return broken;
+        first = (int)(result / 2 - 1);
+        broken |= motus__group_rescue(j, first, MOTUS__LANES);
+        first += MOTUS__LANES;
+    }
+}
+#endif
 MOTUS__KERNEL_OF(semi_implicit_euler)
 MOTUS__KERNEL_OF(explicit_euler)
 MOTUS__KERNEL_OF(position_verlet)
@@ -2566,11 +2668,110 @@ MOTUS__KERNEL_OF(exact_linear_drag)
 #undef MOTUS__FASTS
 #define MOTUS__FASTS(method)
 MOTUS__KERNEL_OF(any_method)
-static int motus__general(const motus__job *j, int first, int end) {
+static MOTUS__NOINLINE long long motus__general_body(const motus__job *j, int first, int end) {
     return motus__kernel_any_method(j, first, end, 3, 0, 1, MOTUS__SHAPE_ANY);
 }
-#undef MOTUS__KERNEL_OF
-#undef MOTUS__FAST
+static MOTUS__NOINLINE int motus__general(const motus__job *j, int first, int end) {
+    int broken = 0;
+    long long result;
+    for (;;) { /* as motus__fast_loop */
+        result = motus__general_body(j, first, end);
+        broken |= (int)(result & 1);
+        if (result < 2) return broken;
+        first = (int)(result / 2 - 1);
+        broken |= motus__group_rescue(j, first, end - first < MOTUS__LANES ? end - first : MOTUS__LANES);
+        first += MOTUS__LANES;
+    }
+}
+/* The rescue (see THE RESCUE, by motus__step_rescaled) of the group [first, first + n), in which a particle's
+   F*(1/m) is not finite: each particle alone. One whose F*(1/m) is finite takes its step as in any group
+   (its lane computes what it computes alone). One whose F*(1/m) is not, with finite inputs, is stepped on a
+   copy by the general kernel with the job in time units of 2^-s s (1/m, the tether's strength and drag
+   rates times 2^-s; the force, gravity and the attractor's strength times 2^-2s; the times 2^s; the
+   velocity in and out), at each s in turn until its step is finite, then damped and stored as the kernel
+   would. Alone, so its result does not depend on the particles beside it: the same at every SIMD width.
+   One whose inputs are not finite, or whose step is not finite at any s, is not written: nonzero. */
+static MOTUS__NOINLINE int motus__group_rescue(const motus__job *j, int first, int n) {
+    motus_real one_x[3], one_v[3], one_force[3], one_inverse_mass, lane[MOTUS__LANES];
+    const int dims = j->dims, damp = (j->terms & MOTUS__T_DAMPING) && j->apply_damping;
+    int level, k, d, stage, broken = 0;
+    motus_real uniform_inverse_mass, kept;
+    motus__job scaled;
+    motus__store(lane, j->uniform_inverse_mass, 1, MOTUS__LANES);
+    uniform_inverse_mass = lane[0];
+    motus__store(lane, j->kept, 1, MOTUS__LANES);
+    kept = lane[0];
+    for (k = 0; k < n; ++k) {
+        const ptrdiff_t at = (ptrdiff_t)(first + k) * j->stride;
+        const motus_real inverse_mass = j->inverse_mass ? j->inverse_mass[at] : uniform_inverse_mass;
+        int finite = motus_real_is_finite(inverse_mass), overflowed = 0, done = 0;
+        for (d = 0; d < dims; ++d) {
+            const motus_real force = j->f[0] ? j->f[d][at] : 0;
+            finite &= motus_real_is_finite(j->x[d][at]) & motus_real_is_finite(j->v[d][at]) & motus_real_is_finite(force);
+            overflowed |= !motus_real_is_finite(force * inverse_mass);
+        }
+        if (!overflowed) { /* its F*(1/m) is finite: the kernel takes it */
+            broken |= motus__general(j, first + k, first + k + 1);
+            continue;
+        }
+        if (j->rescuing) finite = 0; /* not again, in the rescue's own run */
+        for (level = 0; finite && level < MOTUS__RESCUE_LEVELS && !done; ++level) {
+            const motus_real down = motus__rescue_down(level), up = MOTUS_R(1.0) / down;
+            const motus__lane down_lane = motus__splat(down), up_lane = motus__splat(up);
+            scaled = *j;
+            scaled.rescuing = 1;
+            /* damping after, in m/s (its rest speed in these units could underflow); stored here */
+            scaled.terms &= ~(unsigned)(MOTUS__T_DRY | MOTUS__T_DAMPING);
+            scaled.apply_damping = 0;
+            scaled.stride = 1;
+            for (d = 0; d < 3; ++d) {
+                scaled.gravity[d] = (j->gravity[d] * down_lane) * down_lane; /* accelerations: 2^-2s */
+                scaled.x[d] = d < dims ? &one_x[d] : NULL;
+                scaled.v[d] = d < dims ? &one_v[d] : NULL;
+                scaled.f[d] = d < dims && j->f[0] ? &one_force[d] : NULL;
+            }
+            scaled.inverse_mass = j->inverse_mass ? &one_inverse_mass : NULL;
+            scaled.uniform_inverse_mass = j->uniform_inverse_mass * down_lane; /* F*(1/m): (F 2^-s)(1/m 2^-s) */
+            scaled.linear_drag = j->linear_drag * down_lane; /* rates: 2^-s */
+            scaled.attractor_strength = (j->attractor_strength * down_lane) * down_lane;
+            scaled.tether_stiffness = j->tether_stiffness * down_lane; /* k*dx*(1/m): the other 2^-s in 1/m */
+            scaled.h = j->h * up_lane; /* times: 2^s */
+            scaled.half_h = j->half_h * up_lane;
+            scaled.sixth_h = j->sixth_h * up_lane;
+            scaled.half_h2 = (j->half_h2 * up_lane) * up_lane;
+            scaled.substep_dt = j->substep_dt * up;
+            for (stage = 0; stage <= j->kicks; ++stage) {
+                scaled.drift[stage] = j->drift[stage] * up_lane;
+                if (stage < j->kicks) scaled.kick[stage] = j->kick[stage] * up_lane;
+            }
+            scaled.exact_c1 = j->exact_c1 * up_lane; /* (1 - e^-kh)/k: a time */
+            scaled.exact_c2 = (j->exact_c2 * up_lane) * up_lane; /* (h - c1)/k: a time squared */
+            for (d = 0; d < dims; ++d) {
+                one_x[d] = j->x[d][at];
+                one_v[d] = j->v[d][at] * down;
+                if (j->f[0]) one_force[d] = j->f[d][at] * down;
+            }
+            one_inverse_mass = inverse_mass * down;
+            if (motus__general(&scaled, 0, 1) != 0) continue;
+            done = 1;
+            for (d = 0; d < dims; ++d) {
+                one_v[d] = one_v[d] * up;
+                done &= motus_real_is_finite(one_v[d]);
+                if (damp) one_v[d] = motus__damp(one_v[d], kept); /* motus__group_finish's, one lane */
+            }
+        }
+        if (!done) {
+            broken = 1;
+            continue;
+        }
+        if (!(j->terms & MOTUS__T_DRY))
+            for (d = 0; d < dims; ++d) {
+                j->x[d][at] = one_x[d];
+                j->v[d][at] = one_v[d];
+            }
+    }
+    return broken;
+}
 
 /* The kernel for a method: fast for 2D or 3D plain arrays without coupling, else general. In the order of
    motus_method (MOTUS__METHODS). */
