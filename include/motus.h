@@ -2036,7 +2036,9 @@ enum {
 /* The terms a kernel sees, by `shape` (a constant where the kernel is compiled):
    - MOTUS__SHAPE_ANY, the general kernel (any stride, coupling, the dry run): every term read from the job
      at run time, gravity and linear drag always computed as a = (F/m + g) - k*v (g = 0, k = 0 when off);
-   - MOTUS__SHAPE_ALL, the fast kernel for any scene: the same, over plain arrays, without coupling;
+   - MOTUS__SHAPE_ALL, the fast kernel for any scene: the same, over plain arrays, without coupling, and
+     with the tether, the attractor and quadratic drag in their textbook formulas, inline (a group out of
+     their range stops the kernel and goes to the general one, which scales them: see motus__acceleration);
    - the terms of the common scenes (gravity, linear drag, damping, any of them or none): a fast kernel for
      them, with nothing to test at run time but whether there is drag (a predictable branch a stage) and
      damping (one a step), and no work for what the scene lacks. A kernel of its own for each cost 54
@@ -2081,8 +2083,9 @@ typedef struct motus__job {
     int rescuing; /* a job in the rescue's units (motus__group_rescue): no rescue in it */
 } motus__job;
 
-/* The terms with a square root and a division, out of line: a call per group of particles is small next
-   to them, and it keeps every kernel small enough to compile fast (the scenes without them do not pay). */
+/* The terms with a square root and a division, whole, with the scaling that keeps them right at every
+   scale: out of line, called by the general kernel. The fast kernels inline only their textbook formulas
+   and hand a group out of those formulas' range to the general kernel (see motus__acceleration). */
 /* max |c_d| over the components, the unit in which the costly terms below scale what would overflow */
 MOTUS__KI motus__lane motus__largest_magnitude(const motus__lane *c, const int dims) {
     const motus__lane zero = motus__splat(0);
@@ -2193,10 +2196,10 @@ static MOTUS__NOINLINE void motus__tether_far(const motus__job *j, const motus__
 /* The acceleration at a stage, from the terms that do not couple particles, plus the stage's coupled force
    (springs, callback) when there is one. base = F*(1/m) of the accumulated force, or 0. Terms that are
    off are skipped, not added as zero (which would turn a -0 into +0): the same bits whatever path. */
-MOTUS__KI void motus__acceleration(const motus__job *j, const motus__lane *x, const motus__lane *v,
-                                   const motus__lane *base, motus__lane inverse_mass, motus__mask movable,
-                                   motus__lane *a, const int dims, const int coupled, const unsigned shape, int stage,
-                                   int i) {
+MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, const motus__lane *v,
+                                  const motus__lane *base, motus__lane inverse_mass, motus__mask movable,
+                                  motus__lane *a, const int dims, const int coupled, const unsigned shape, int stage,
+                                  int i) {
     const unsigned t = MOTUS__TERMS(j, shape);
     const motus__lane zero = motus__splat(0);
     if (!MOTUS__EXACT_SHAPE(shape))
@@ -2213,7 +2216,8 @@ MOTUS__KI void motus__acceleration(const motus__job *j, const motus__lane *x, co
             overflowed = overflowed | (motus__mask)(offset - offset != zero); /* overflowed (or NaN) */
             pull[d] = (offset * j->tether_stiffness) * inverse_mass;
         );
-        if (motus__any(overflowed)) { /* out of line, through copies (see below) */
+        if (!coupled && motus__any(overflowed)) return 1; /* a fast kernel: stop (see below) */
+        if (motus__any(overflowed)) { /* the general kernel: out of line, through copies (see below) */
             motus__lane x_copy[3], pull_copy[3], inverse_mass_copy = inverse_mass;
             MOTUS__EACH_D(
                 x_copy[d] = x[d];
@@ -2224,7 +2228,34 @@ MOTUS__KI void motus__acceleration(const motus__job *j, const motus__lane *x, co
         }
         MOTUS__EACH_D(a[d] = a[d] - pull[d];);
     }
-    if (t & (MOTUS__T_QUADRATIC_DRAG | MOTUS__T_ATTRACTOR)) {
+    if (!coupled && (t & (MOTUS__T_QUADRATIC_DRAG | MOTUS__T_ATTRACTOR))) {
+        /* A fast kernel: the textbook formulas of motus__costly_terms, inline and in its order, the same
+           operations and so the same bits. A group with a lane out of their range (where motus__costly_terms
+           scales) stops: the kernel hands it to the general kernel, which makes the call. No call in a fast
+           kernel's loop: a call, taken or not, makes GCC keep the loop's constants in memory, not in
+           registers (the call may use every vector register). */
+        const motus__lane largest = j->largest;
+        motus__lane r[3], r2, cube, pull, speed2, drag;
+        if (t & MOTUS__T_QUADRATIC_DRAG) {
+            speed2 = v[0] * v[0] + v[1] * v[1];
+            if (dims == 3) speed2 = speed2 + v[2] * v[2];
+            if (motus__any((motus__mask)(speed2 > largest))) return 1;
+            drag = j->quadratic_drag * motus__sqrt(speed2);
+            MOTUS__EACH_D(a[d] = a[d] - v[d] * drag;);
+        }
+        if (t & MOTUS__T_ATTRACTOR) {
+            MOTUS__EACH_D(r[d] = x[d] - j->attractor[d];);
+            r2 = r[0] * r[0] + r[1] * r[1];
+            if (dims == 3) r2 = r2 + r[2] * r[2];
+            cube = r2 * motus__sqrt(r2);
+            pull = j->attractor_strength / cube;
+            if (motus__any((motus__mask)(cube > largest) |
+                           (motus__mask)(cube < motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL)) |
+                           (motus__mask)(pull > largest)))
+                return 1;
+            MOTUS__EACH_D(a[d] = a[d] - r[d] * pull;);
+        }
+    } else if (t & (MOTUS__T_QUADRATIC_DRAG | MOTUS__T_ATTRACTOR)) {
         /* Copies go to the call, so that x, v and a themselves never have their address taken and stay in
            registers on the paths that do not make it. */
         motus__lane x_copy[3], v_copy[3], a_copy[3];
@@ -2246,6 +2277,7 @@ MOTUS__KI void motus__acceleration(const motus__job *j, const motus__lane *x, co
         const motus__lane no_acceleration = motus__splat(-MOTUS_R(0.0));
         MOTUS__EACH_D(a[d] = motus__select(movable, a[d], no_acceleration););
     }
+    return 0;
 }
 
 /* One evaluation of the forces at stage `stage`. In a pass that records that stage (coupled scenes), the
@@ -2261,8 +2293,7 @@ MOTUS__KI int motus__evaluate(const motus__job *j, int stage, const motus__lane 
         return 1;
     }
     (void)n;
-    motus__acceleration(j, x, v, base, inverse_mass, movable, a, dims, coupled, shape, stage, i);
-    return 0;
+    return motus__acceleration(j, x, v, base, inverse_mass, movable, a, dims, coupled, shape, stage, i);
 }
 #define MOTUS__EVALUATE(stage, xs, vs, a)                                                                        \
     if (motus__evaluate(j, stage, xs, vs, base, inverse_mass, movable, a, dims, coupled, shape, i, n)) return 1
@@ -2590,6 +2621,7 @@ MOTUS__KI void motus__group_finish(const motus__job *j, motus__group *g, const i
                 motus__group_substep_end(j, &g, &check, dims, shape);                                            \
             }                                                                                                    \
             if (s == j->substeps) motus__group_finish(j, &g, dims, contiguous, shape);                           \
+            else if (!coupled) break; /* a fast kernel's term out of range: the group to motus__group_rescue */  \
         }                                                                                                        \
         if (i < end_here) /* stopped: the group at i for motus__group_rescue */                                  \
             return MOTUS__STOPPED_AT(i) | !motus_real_is_finite(motus__lane_sum(check));                         \
@@ -2640,7 +2672,8 @@ static MOTUS__NOINLINE int motus__group_rescue(const motus__job *j, int first, i
 /* A kernel's result: bit 0, a value not finite; from bit 1 up, 1 + the index of the group it stopped at. */
 #define MOTUS__STOPPED_AT(i) (((long long)(i) + 1) * 2)
 #if MOTUS__FAST_KERNELS
-/* A fast kernel from first to end: where it stops at a group whose F*(1/m) is not finite, motus__group_rescue
+/* A fast kernel from first to end: where it stops at a group (one whose F*(1/m) is not finite, or with a
+   lane out of the range of the textbook formulas it inlines: see motus__acceleration), motus__group_rescue
    takes that group and the kernel goes on after it. A loop of calls, out of the kernel, so that no call to
    the rescue is compiled into the kernel's loop. */
 static MOTUS__NOINLINE int motus__fast_loop(const motus__job *j, int first, int end,
@@ -2684,9 +2717,10 @@ static MOTUS__NOINLINE int motus__general(const motus__job *j, int first, int en
         first += MOTUS__LANES;
     }
 }
-/* The rescue (see THE RESCUE, by motus__step_rescaled) of the group [first, first + n), in which a particle's
-   F*(1/m) is not finite: each particle alone. One whose F*(1/m) is finite takes its step as in any group
-   (its lane computes what it computes alone). One whose F*(1/m) is not, with finite inputs, is stepped on a
+/* The rescue (see THE RESCUE, by motus__step_rescaled) of the group [first, first + n) a fast kernel
+   stopped at: each particle alone. One whose F*(1/m) is finite takes its step in the general kernel, as
+   in any group (its lane computes what it computes alone; the general kernel scales the terms the fast
+   kernel does not). One whose F*(1/m) is not, with finite inputs, is stepped on a
    copy by the general kernel with the job in time units of 2^-s s (1/m, the tether's strength and drag
    rates times 2^-s; the force, gravity and the attractor's strength times 2^-2s; the times 2^s; the
    velocity in and out), at each s in turn until its step is finite, then damped and stored as the kernel

@@ -377,6 +377,75 @@ TEST(step_rescued_where_only_an_intermediate_overflows) {
                 }
 }
 
+TEST(fast_kernel_hands_a_term_out_of_range_to_the_general_kernel) {
+    /* The fast kernels inline the textbook formulas of the tether, the attractor and quadratic drag and stop
+       at a group with a lane out of their range, which the general kernel then steps (it scales those
+       terms). For every method that takes these terms, 2D and 3D, at a particle in a whole group of lanes
+       (5) and at the last one (15): a particle exactly on the attractor; one so far from it that |r|^3
+       overflows; one so fast that |v|^2 overflows (quadratic drag); one whose offset from the tether
+       overflows. Each step is OK and finite, that particle's result is what it is when stepped alone (the
+       general kernel), and the others are what they are without it, bit for bit. */
+    const motus_real largest = REAL_MAX, h = (motus_real)1e-3;
+    static small_state b, plain, copy;
+    int dims, m, at, kind, i, d;
+    for (dims = 2; dims <= 3; ++dims)
+        for (m = 0; m < MOTUS_METHOD_COUNT; ++m)
+            for (kind = 0; kind < 4; ++kind)
+                for (at = 5; at < 16; at += 10) {
+                    motus_scene scene;
+                    motus_state alone;
+                    int same = 1, finite = 1;
+                    if (m == MOTUS_EXACT_LINEAR_DRAG) continue; /* takes none of these terms */
+                    memset(&scene, 0, sizeof scene);
+                    scene.method = (motus_method)m;
+                    small_state_fill(&plain);
+                    memcpy(&b, &plain, sizeof b);
+                    if (kind == 0) { /* exactly on the attractor (no pull there); plain's is 0.5 m off */
+                        scene.attractor_strength = 1;
+                        scene.attractor = motus_v3((motus_real)at + MOTUS_R(0.5), (motus_real)at + MOTUS_R(0.5),
+                                                   (motus_real)at + MOTUS_R(0.5));
+                        b.x[at] = b.y[at] = b.z[at] = (motus_real)at + MOTUS_R(0.5);
+                    } else if (kind == 1) { /* |r|^3 past the largest real, the pull tiny */
+                        scene.attractor_strength = 1;
+                        b.x[at] = (motus_real)(4 * cbrt((double)largest));
+                    } else if (kind == 2) { /* |v|^2 past the largest real, c*|v|*v = 1e-3*|v| */
+                        b.vx[at] = (motus_real)(2 * sqrt((double)largest));
+                        scene.quadratic_drag = (motus_real)(1e-3 / (double)b.vx[at]);
+                    } else { /* x - tether past the largest real, k*(x - tether) not */
+                        scene.tether = motus_v3(-largest / 4 * 3, 0, 0);
+                        scene.tether_stiffness = (motus_real)1e-3;
+                        b.x[at] = largest / 4 * 3;
+                    }
+                    memcpy(&copy, &b, sizeof copy);
+                    small_state_bind(&plain, dims, 16);
+                    small_state_bind(&b, dims, 16);
+                    small_state_bind(&copy, dims, 16);
+                    alone = small_state_one(&copy, dims, at);
+                    ENSURE_EQ_INT(motus_step(&scene, &alone, h, NULL, 0), MOTUS_OK);
+                    ENSURE_EQ_INT(motus_step(&scene, &plain.state, h, NULL, 0), MOTUS_OK);
+                    ENSURE_EQ_INT(motus_step(&scene, &b.state, h, NULL, 0), MOTUS_OK);
+                    for (d = 0; d < dims; ++d) {
+                        const motus_real *x = d == 0 ? b.x : d == 1 ? b.y : b.z;
+                        const motus_real *v = d == 0 ? b.vx : d == 1 ? b.vy : b.vz;
+                        const motus_real *xa = d == 0 ? copy.x : d == 1 ? copy.y : copy.z;
+                        const motus_real *va = d == 0 ? copy.vx : d == 1 ? copy.vy : copy.vz;
+                        finite &= motus_real_is_finite(x[at]) & motus_real_is_finite(v[at]);
+                        ENSURE(same_bytes(&x[at], &xa[at], sizeof x[at]) && same_bytes(&v[at], &va[at], sizeof v[at]));
+                    }
+                    ENSURE(finite);
+                    for (i = 0; i < 16; ++i)
+                        if (i != at)
+                            same &= same_bytes(&b.x[i], &plain.x[i], sizeof b.x[i]) & same_bytes(&b.vx[i], &plain.vx[i], sizeof b.vx[i]) &
+                                    same_bytes(&b.y[i], &plain.y[i], sizeof b.y[i]) & same_bytes(&b.vy[i], &plain.vy[i], sizeof b.vy[i]) &
+                                    same_bytes(&b.z[i], &plain.z[i], sizeof b.z[i]) & same_bytes(&b.vz[i], &plain.vz[i], sizeof b.vz[i]);
+                    if (!same) {
+                        fprintf(stderr, "  %s, %dD, case %d, particle %d: a particle changed by its neighbour's"
+                                        " trip to the general kernel\n", method_name((motus_method)m), dims, kind, at);
+                        motus_test_failures++;
+                    }
+                }
+}
+
 TEST(particle_step_rescued_as_the_engine) {
     /* motus_particle_step where F*(1/m) overflows and a*dt fits (F = largest/4 on 0.01 kg, 1 ms): OK, the
        velocity right, and the bits of the engine's semi-implicit Euler on the same particle (2D and 3D);
@@ -1017,6 +1086,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(step_overflow_near_max_one_method_per_family),
     TEST_CASE(step_rescued_where_only_an_intermediate_overflows),
     TEST_CASE(particle_step_rescued_as_the_engine),
+    TEST_CASE(fast_kernel_hands_a_term_out_of_range_to_the_general_kernel),
     TEST_CASE(damping_factors_accepted_or_rejected_as_documented),
     TEST_CASE(rest_speed_keeps_v_dt_normal),
     TEST_CASE(damping_flushes_to_exact_zero_at_the_rest_speed),
