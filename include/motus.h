@@ -76,10 +76,11 @@
      nothing was written, with one exception: without MOTUS_CHECKED (>>config), motus_step (and
      motus_step_range) on particle data that is NaN or Inf, or that overflows, has written the step when
      it returns MOTUS_ERROR_NOT_FINITE (it finds out while it writes, to stay a single pass; a particle
-     whose force or inverse mass is NaN or Inf is found before and left as it was, except in scenes with
-     springs or a callback), and it does not look for a negative inverse mass (motus_state_check and
-     MOTUS_CHECKED do). dt == 0 is a valid step of nothing (NaN or Inf in the state is still reported); a
-     count of 0 is valid and does nothing.
+     whose force or inverse mass is NaN or Inf, or whose F*(1/m) overflows and cannot be rescued (THE
+     RESCUE), is found before and left as it was, except in scenes with springs or a callback), and it
+     does not look for a negative inverse mass (motus_state_check and MOTUS_CHECKED do). dt == 0 is a
+     valid step of nothing (NaN or Inf in the state is still reported); a count of 0 is valid and does
+     nothing.
      motus_result_string() turns a result into a sentence, motus_scene_check() names the scene field at
      fault, motus_state_check() the particle and field.
    - A step whose F*(1/m) passes the largest real while its result fits (a huge force on a light particle

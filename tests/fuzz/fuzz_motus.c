@@ -593,6 +593,21 @@ static int walls_on(const motus_scene *scene, int dims) {
     return scene->bounds_min.x != 0 || scene->bounds_min.y != 0 || scene->bounds_max.x != 0 || scene->bounds_max.y != 0 ||
            (dims == 3 && (scene->bounds_min.z != 0 || scene->bounds_max.z != 0));
 }
+/* Whether a particle of [first, end) has F*(1/m) past the largest real (or not finite): the release step
+   rescues such a particle if it can and otherwise leaves it as it was, and returns NOT_FINITE (README, Bad
+   input). 1/m is the state's, or the scene's uniform one. */
+static int range_force_overflows(const motus_scene *scene, const motus_state *s, int first, int end) {
+    const ptrdiff_t stride = s->stride == 0 ? 1 : s->stride;
+    const motus_real uniform = scene->mass > 0 ? MOTUS_R(1.0) / scene->mass : MOTUS_R(1.0);
+    int i, d;
+    if (!s->force[0]) return 0;
+    for (i = first; i < end; ++i) {
+        const motus_real inverse_mass = s->inverse_mass ? s->inverse_mass[(ptrdiff_t)i * stride] : uniform;
+        for (d = 0; d < state_dims(s); ++d)
+            if (!motus_real_is_finite(s->force[d][(ptrdiff_t)i * stride] * inverse_mass)) return 1;
+    }
+    return 0;
+}
 #endif
 static void step_operation(world *w, reader *r, int ranged) {
     motus_state s = variant(w, r);
@@ -700,8 +715,11 @@ static void step_operation(world *w, reader *r, int ranged) {
         REQUIRE(precheck_ok && precheck == MOTUS_ERROR_NOT_FINITE);
 #else
         /* (2) the particles read or the ones written hold a NaN or an Inf; or a step overflowed and the walls
-           (bounds, or contact walls) clamped what it wrote back inside: the check is made before the walls */
-        REQUIRE(precheck_ok && (precheck != MOTUS_OK || !range_finite(&s, first, end) || walls_on(&w->scene, dims)));
+           (bounds, or contact walls) clamped what it wrote back inside: the check is made before the walls; or
+           a particle's F*(1/m) passed the largest real and its step could not be rescued: it was left as it
+           was (the state read here is the one after the step: such a particle still holds its force) */
+        REQUIRE(precheck_ok && (precheck != MOTUS_OK || !range_finite(&s, first, end) || walls_on(&w->scene, dims) ||
+                                range_force_overflows(&w->scene, &s, first, end)));
 #endif
     }
 #ifdef MOTUS_CHECKED
