@@ -300,6 +300,16 @@ static motus_state small_state_one(small_state *b, int dims, int at) {
     one.inverse_mass += at;
     return one;
 }
+/* Whether every particle but `at` has the same position and velocity bits in a and b. */
+static int small_state_same_but(const small_state *a, const small_state *b, int at) {
+    int i, same = 1;
+    for (i = 0; i < 16; ++i)
+        if (i != at)
+            same &= same_bytes(&a->x[i], &b->x[i], sizeof a->x[i]) & same_bytes(&a->vx[i], &b->vx[i], sizeof a->vx[i]) &
+                    same_bytes(&a->y[i], &b->y[i], sizeof a->y[i]) & same_bytes(&a->vy[i], &b->vy[i], sizeof a->vy[i]) &
+                    same_bytes(&a->z[i], &b->z[i], sizeof a->z[i]) & same_bytes(&a->vz[i], &b->vz[i], sizeof a->vz[i]);
+    return same;
+}
 TEST(step_rescued_where_only_an_intermediate_overflows) {
     /* F*(1/m) past the largest real while the step's result fits (THE RESCUE in motus.h), for every method,
        2D and 3D, at a particle in a whole group of lanes (5) and at the last one (15), in four scenes: plain;
@@ -311,7 +321,7 @@ TEST(step_rescued_where_only_an_intermediate_overflows) {
        the step is still refused. */
     const motus_real largest = REAL_MAX, h = (motus_real)1e-3;
     static small_state b, plain, copy;
-    int dims, m, at, kind, i;
+    int dims, m, at, kind;
     for (dims = 2; dims <= 3; ++dims)
         for (m = 0; m < MOTUS_METHOD_COUNT; ++m)
             for (kind = 0; kind < 4; ++kind)
@@ -319,7 +329,7 @@ TEST(step_rescued_where_only_an_intermediate_overflows) {
                     motus_scene scene;
                     motus_state alone;
                     motus_real x_alone[3], v_alone[3];
-                    int d, same = 1;
+                    int d;
                     memset(&scene, 0, sizeof scene);
                     scene.method = (motus_method)m;
                     if (kind == 1) scene.gravity = motus_v3(0, (motus_real)9.81, 0), scene.damping_per_step = MOTUS_R(0.01);
@@ -351,12 +361,7 @@ TEST(step_rescued_where_only_an_intermediate_overflows) {
                     ENSURE(same_bytes(&b.x[at], &x_alone[0], sizeof x_alone[0]) && same_bytes(&b.vx[at], &v_alone[0], sizeof v_alone[0]));
                     ENSURE(same_bytes(&b.y[at], &x_alone[1], sizeof x_alone[1]) && same_bytes(&b.vy[at], &v_alone[1], sizeof v_alone[1]));
                     if (dims == 3) ENSURE(same_bytes(&b.z[at], &x_alone[2], sizeof x_alone[2]) && same_bytes(&b.vz[at], &v_alone[2], sizeof v_alone[2]));
-                    for (i = 0; i < 16; ++i)
-                        if (i != at)
-                            same &= same_bytes(&b.x[i], &plain.x[i], sizeof b.x[i]) & same_bytes(&b.vx[i], &plain.vx[i], sizeof b.vx[i]) &
-                                    same_bytes(&b.y[i], &plain.y[i], sizeof b.y[i]) & same_bytes(&b.vy[i], &plain.vy[i], sizeof b.vy[i]) &
-                                    same_bytes(&b.z[i], &plain.z[i], sizeof b.z[i]) & same_bytes(&b.vz[i], &plain.vz[i], sizeof b.vz[i]);
-                    if (!same) {
+                    if (!small_state_same_but(&b, &plain, at)) {
                         fprintf(stderr, "  %s, %dD, scene %d: a particle changed by its neighbour's rescue\n",
                                 method_name((motus_method)m), dims, kind);
                         motus_test_failures++;
@@ -388,14 +393,14 @@ TEST(fast_kernel_hands_a_term_out_of_range_to_the_general_kernel) {
        general kernel), and the others are what they are without it, bit for bit. */
     const motus_real largest = REAL_MAX, h = (motus_real)1e-3;
     static small_state b, plain, copy;
-    int dims, m, at, kind, i, d;
+    int dims, m, at, kind, d;
     for (dims = 2; dims <= 3; ++dims)
         for (m = 0; m < MOTUS_METHOD_COUNT; ++m)
             for (kind = 0; kind < 4; ++kind)
                 for (at = 5; at < 16; at += 10) {
                     motus_scene scene;
                     motus_state alone;
-                    int same = 1, finite = 1;
+                    int finite = 1;
                     if (m == MOTUS_EXACT_LINEAR_DRAG) continue; /* takes none of these terms */
                     memset(&scene, 0, sizeof scene);
                     scene.method = (motus_method)m;
@@ -434,12 +439,7 @@ TEST(fast_kernel_hands_a_term_out_of_range_to_the_general_kernel) {
                         ENSURE(same_bytes(&x[at], &xa[at], sizeof x[at]) && same_bytes(&v[at], &va[at], sizeof v[at]));
                     }
                     ENSURE(finite);
-                    for (i = 0; i < 16; ++i)
-                        if (i != at)
-                            same &= same_bytes(&b.x[i], &plain.x[i], sizeof b.x[i]) & same_bytes(&b.vx[i], &plain.vx[i], sizeof b.vx[i]) &
-                                    same_bytes(&b.y[i], &plain.y[i], sizeof b.y[i]) & same_bytes(&b.vy[i], &plain.vy[i], sizeof b.vy[i]) &
-                                    same_bytes(&b.z[i], &plain.z[i], sizeof b.z[i]) & same_bytes(&b.vz[i], &plain.vz[i], sizeof b.vz[i]);
-                    if (!same) {
+                    if (!small_state_same_but(&b, &plain, at)) {
                         fprintf(stderr, "  %s, %dD, case %d, particle %d: a particle changed by its neighbour's"
                                         " trip to the general kernel\n", method_name((motus_method)m), dims, kind, at);
                         motus_test_failures++;
