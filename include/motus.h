@@ -604,14 +604,15 @@ MOTUS_DEF motus_result motus_particles3_check(const motus_particle3 *particles, 
      Self-starting and its velocity is the synchronised one: on a Kepler orbit its energy error is
      velocity Verlet's, not the 8x of the old x_{n+1} - x_n form that needed the last step kept.
    VELOCITY_VERLET      2      2      yes         w*h < 2              2nd order (v predicted to the end)
-     x += v*h + a0*h^2/2; v += (a0 + a(x_new, v + a0*h))*h/2.
+     x += v*h + a0*h^2/2; v += a0*h/2 + a(x_new, v + a0*h)*h/2.
    LEAPFROG             2      2      yes         w*h < 2              2nd order
      Kick-drift-kick: v += a0*h/2; x += v*h; v += a(x_new, v + a0*h/2)*h/2. Velocity Verlet's map written
      with the half-step velocity; they differ in rounding only. Time-reversible.
    MIDPOINT             2      2      no          never                2nd order
      Explicit midpoint RK2; grows a spring's amplitude by sqrt(1 + (w*h)^4/4) per step.
    RK4                  4      4      no          w*h < 2*sqrt(2)      4th order
-     Classic Runge-Kutta; energy drifts by O(h^4) per unit time.
+     Classic Runge-Kutta, its sums formed as odeint's: x += v1*h/6 + v2*h/3 + v3*h/3 + v4*h/6 with the
+     stages' velocities, v likewise with their accelerations. Energy drifts by O(h^4) per unit time.
    FOREST_RUTH          4      3      yes         w*h < 1.5734         1st order (a kick is Euler in v)
      Yoshida's triple jump of leapfrog, theta = 1/(2 - 2^(1/3)): D(th/2) K(th) D((1-th)/2) K(1-2th)
      D((1-th)/2) K(th) D(th/2). 4th order for forces of position only.
@@ -860,8 +861,9 @@ MOTUS_DEF motus_real motus__kick(motus_real v, motus_real force, motus_real inve
    force that overflowed) keep their digits. Where no s gives a finite step, the result itself does not
    fit: OVERFLOW. The engine takes the same steps (motus__group_rescue): the paths agree bit for bit.
    The trigger is F*(1/m) alone, tested where the forces are loaded: the fast kernels can afford a test
-   there and not one of their results (see the kernel). Other intermediates (RK4's sum of four velocities
-   near the largest real, a tether's k*dx) are not rescued. */
+   there and not one of their results (see the kernel). Other accelerations past the largest real (a
+   tether's k*dx*(1/m), an attractor's pull) are not rescued; the methods' sums are formed so that they
+   overflow only where the step does (RK4's and velocity Verlet's add changes of x and v, each a*h or v*h). */
 /* Out of line and cold: what the common paths below reach only for rare input (see there). */
 #if defined(__GNUC__) || defined(__clang__)
 #define MOTUS__RARE static __attribute__((noinline, cold, unused))
@@ -2073,7 +2075,7 @@ typedef struct motus__job {
     motus__lane tether[3], tether_stiffness;
     motus__lane kept, rest_speed, bounds_min[3], bounds_max[3], bounce, largest;
     /* step constants: h and the fractions of it the methods use */
-    motus__lane h, half_h, half_h2, sixth_h;
+    motus__lane h, half_h, half_h2, third_h, sixth_h;
     /* the splittings (Forest-Ruth, McLachlan): D(drift[0]) K(kick[0]) ... K(kick[kicks-1]) D(drift[kicks]) */
     motus__lane drift[MOTUS__MAX_EVALUATIONS + 1], kick[MOTUS__MAX_EVALUATIONS];
     int kicks;
@@ -2332,6 +2334,8 @@ MOTUS__KI int motus__position_verlet(MOTUS__METHOD_ARGS) {
     );
     return 0;
 }
+/* The velocity's change is formed as a0*(h/2) + a1*(h/2): a0 + a1 overflows where the accelerations pass
+   half the largest real and the step does not (the same for RK4's sums below). */
 MOTUS__KI int motus__velocity_verlet(MOTUS__METHOD_ARGS) {
     motus__lane a0[3], a1[3], predicted[3];
     MOTUS__EVALUATE(0, x, v, a0);
@@ -2340,7 +2344,7 @@ MOTUS__KI int motus__velocity_verlet(MOTUS__METHOD_ARGS) {
         predicted[d] = v[d] + a0[d] * j->h;
     );
     MOTUS__EVALUATE(1, x, predicted, a1);
-    MOTUS__EACH_D(v[d] = v[d] + (a0[d] + a1[d]) * j->half_h;);
+    MOTUS__EACH_D(v[d] = v[d] + (a0[d] * j->half_h + a1[d] * j->half_h););
     return 0;
 }
 MOTUS__KI int motus__leapfrog(MOTUS__METHOD_ARGS) {
@@ -2369,34 +2373,35 @@ MOTUS__KI int motus__midpoint(MOTUS__METHOD_ARGS) {
     );
     return 0;
 }
+/* The weighted sum as odeint's rk4 forms it, x + h/6*k1 + h/3*k2 + h/3*k3 + h/6*k4: each term a change of
+   x or v, so no sum passes the largest real unless the step does (k1 + 2*k2 + 2*k3 + k4 overflowed in
+   float for velocities past 6.8e37 m/s, where the step itself fits). */
 MOTUS__KI int motus__rk4(MOTUS__METHOD_ARGS) {
-    motus__lane a[3], xs[3], vs[3], sum_v[3], sum_a[3];
-    const motus__lane two = motus__splat(2);
+    motus__lane a[3], xs[3], vs[3], dx[3], dv[3];
     MOTUS__EVALUATE(0, x, v, a);
-    MOTUS__EACH_D( /* k1 = (v, a1) */
-        sum_v[d] = v[d];
-        sum_a[d] = a[d];
+    MOTUS__EACH_D( /* k1 = (v, a1); v*h/6 is added at the next stage, where it is needed (v is kept anyway) */
+        dv[d] = a[d] * j->sixth_h;
         xs[d] = x[d] + v[d] * j->half_h;
         vs[d] = v[d] + a[d] * j->half_h;
     );
     MOTUS__EVALUATE(1, xs, vs, a);
     MOTUS__EACH_D( /* k2 = (vs, a2) */
-        sum_v[d] = sum_v[d] + vs[d] * two;
-        sum_a[d] = sum_a[d] + a[d] * two;
+        dx[d] = v[d] * j->sixth_h + vs[d] * j->third_h;
+        dv[d] = dv[d] + a[d] * j->third_h;
         xs[d] = x[d] + vs[d] * j->half_h;
         vs[d] = v[d] + a[d] * j->half_h;
     );
     MOTUS__EVALUATE(2, xs, vs, a);
     MOTUS__EACH_D( /* k3 */
-        sum_v[d] = sum_v[d] + vs[d] * two;
-        sum_a[d] = sum_a[d] + a[d] * two;
+        dx[d] = dx[d] + vs[d] * j->third_h;
+        dv[d] = dv[d] + a[d] * j->third_h;
         xs[d] = x[d] + vs[d] * j->h;
         vs[d] = v[d] + a[d] * j->h;
     );
     MOTUS__EVALUATE(3, xs, vs, a);
-    MOTUS__EACH_D( /* k4, then the weighted sum 1, 2, 2, 1 */
-        x[d] = x[d] + (sum_v[d] + vs[d]) * j->sixth_h;
-        v[d] = v[d] + (sum_a[d] + a[d]) * j->sixth_h;
+    MOTUS__EACH_D( /* k4 */
+        x[d] = x[d] + (dx[d] + vs[d] * j->sixth_h);
+        v[d] = v[d] + (dv[d] + a[d] * j->sixth_h);
     );
     return 0;
 }
@@ -2773,8 +2778,9 @@ static MOTUS__NOINLINE int motus__group_rescue(const motus__job *j, int first, i
             scaled.tether_stiffness = j->tether_stiffness * down_lane; /* k*dx*(1/m): the other 2^-s in 1/m */
             scaled.h = j->h * up_lane; /* times: 2^s */
             scaled.half_h = j->half_h * up_lane;
-            scaled.sixth_h = j->sixth_h * up_lane;
             scaled.half_h2 = (j->half_h2 * up_lane) * up_lane;
+            scaled.third_h = j->third_h * up_lane;
+            scaled.sixth_h = j->sixth_h * up_lane;
             scaled.substep_dt = j->substep_dt * up;
             for (stage = 0; stage <= j->kicks; ++stage) {
                 scaled.drift[stage] = j->drift[stage] * up_lane;
@@ -3226,6 +3232,7 @@ static void motus__job_init(motus__job *j, const motus_scene *scene, const motus
     j->substep_dt = h;
     j->half_h = motus__splat(h * MOTUS_R(0.5));
     j->half_h2 = motus__splat(h * h * MOTUS_R(0.5));
+    j->third_h = motus__splat(h / MOTUS_R(3.0));
     j->sixth_h = motus__splat(h / MOTUS_R(6.0));
     if (scene->method == MOTUS_FOREST_RUTH || scene->method == MOTUS_MCLACHLAN4) {
         motus_real drift[MOTUS__MAX_EVALUATIONS + 1], kick[MOTUS__MAX_EVALUATIONS];

@@ -383,6 +383,65 @@ TEST(step_rescued_where_only_an_intermediate_overflows) {
                 }
 }
 
+TEST(method_sums_overflow_only_where_the_step_does) {
+    /* RK4 added its stages' velocities (and accelerations) as k1 + 2*k2 + 2*k3 + k4 before multiplying by
+       h/6, and velocity Verlet its accelerations as a0 + a1 before h/2: sums of up to six times the largest
+       value, which overflowed where the step fits. Now each term is a change of x or v. For every method,
+       2D and 3D, at a particle in a whole group of lanes (5) and at the last one (15): a velocity of 0.4
+       times the largest real (no force; dt = 2^-10 s), and a gravity of 0.6 times it (dt = 2^-20 s). Each
+       step is MOTUS_OK, the particle's new velocity and position right to 1e-5 (before: RK4 failed both, and
+       velocity Verlet the second, with MOTUS_ERROR_NOT_FINITE), and the other particles are what they are
+       without it, bit for bit. */
+    const motus_real largest = REAL_MAX;
+    static small_state b, plain;
+    int dims, m, at, kind;
+    for (dims = 2; dims <= 3; ++dims)
+        for (m = 0; m < MOTUS_METHOD_COUNT; ++m)
+            for (kind = 0; kind < 2; ++kind)
+                for (at = 5; at < 16; at += 10) {
+                    const motus_real h = kind == 0 ? MOTUS_R(1.0) / 1024 : MOTUS_R(1.0) / 1048576;
+                    const long double fast = (long double)largest * 0.4L, g = (long double)largest * 0.6L;
+                    long double expected_x, expected_v;
+                    motus_scene scene;
+                    memset(&scene, 0, sizeof scene);
+                    scene.method = (motus_method)m;
+                    small_state_fill(&plain);
+                    small_state_bind(&plain, dims, 16);
+                    if (kind == 1) { /* every particle at rest: a uniform gravity moves them all alike */
+                        int i;
+                        for (i = 0; i < 16; ++i) plain.vx[i] = plain.vy[i] = plain.vz[i] = 0;
+                    }
+                    memcpy(&b, &plain, sizeof b);
+                    small_state_bind(&b, dims, 16);
+                    if (kind == 0) {
+                        b.vx[at] = (motus_real)fast;
+                        expected_x = (long double)b.x[at] + fast * h;
+                        expected_v = fast;
+                    } else {
+                        scene.gravity = motus_v3((motus_real)g, 0, 0);
+                        b.fx[at] = 0; /* the others' force of 1 N is nothing beside g */
+                        expected_v = g * h;
+                        /* explicit Euler moves by the old velocity (0), semi-implicit Euler by the new one (g*h^2),
+                           the others exactly as constant acceleration does (g*h^2/2) */
+                        expected_x = (long double)b.x[at] + g * h * h *
+                                     (m == MOTUS_EXPLICIT_EULER ? 0 : m == MOTUS_SEMI_IMPLICIT_EULER ? 1 : 0.5L);
+                    }
+                    ENSURE_EQ_INT(motus_step(&scene, &plain.state, h, NULL, 0), MOTUS_OK);
+                    ENSURE_EQ_INT(motus_step(&scene, &b.state, h, NULL, 0), MOTUS_OK);
+                    if (!near_relative(b.vx[at], expected_v) || !near_relative(b.x[at], expected_x)) {
+                        fprintf(stderr, "  %s, %dD, particle %d, case %d: x %g v %g, expected x %Lg v %Lg\n",
+                                method_name((motus_method)m), dims, at, kind, (double)b.x[at], (double)b.vx[at],
+                                expected_x, expected_v);
+                        motus_test_failures++;
+                    }
+                    if (!small_state_same_but(&b, &plain, at)) {
+                        fprintf(stderr, "  %s, %dD, case %d: a particle changed by its neighbour's velocity\n",
+                                method_name((motus_method)m), dims, kind);
+                        motus_test_failures++;
+                    }
+                }
+}
+
 TEST(fast_kernel_hands_a_term_out_of_range_to_the_general_kernel) {
     /* The fast kernels inline the textbook formulas of the tether, the attractor and quadratic drag and stop
        at a group with a lane out of their range, which the general kernel then steps (it scales those
@@ -1087,6 +1146,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(step_overflow_near_max_one_method_per_family),
     TEST_CASE(step_rescued_where_only_an_intermediate_overflows),
     TEST_CASE(particle_step_rescued_as_the_engine),
+    TEST_CASE(method_sums_overflow_only_where_the_step_does),
     TEST_CASE(fast_kernel_hands_a_term_out_of_range_to_the_general_kernel),
     TEST_CASE(damping_factors_accepted_or_rejected_as_documented),
     TEST_CASE(rest_speed_keeps_v_dt_normal),
