@@ -860,10 +860,16 @@ MOTUS_DEF motus_real motus__kick(motus_real v, motus_real force, motus_real inve
    smallest that brings the large values in range, so that the small ones (a gravity of 1e-30 beside the
    force that overflowed) keep their digits. Where no s gives a finite step, the result itself does not
    fit: OVERFLOW. The engine takes the same steps (motus__group_rescue): the paths agree bit for bit.
-   The trigger is F*(1/m) alone, tested where the forces are loaded: the fast kernels can afford a test
-   there and not one of their results (see the kernel). Other accelerations past the largest real (a
-   tether's k*dx*(1/m), an attractor's pull) are not rescued; the methods' sums are formed so that they
-   overflow only where the step does (RK4's and velocity Verlet's add changes of x and v, each a*h or v*h). */
+   The triggers: F*(1/m) not finite, tested where the forces are loaded; and a term whose textbook formula
+   is out of range at a stage (a tether's k*dx*(1/m) not finite, a quadratic drag's |v|^2 past
+   largest/(4c), an attractor's |r|^3 or pull past the largest real), which stops the kernel at that group
+   (see motus__acceleration): each particle of it is then stepped alone by the general kernel, which scales
+   what it can (x - tether, |v|^2, |r|^3), and one whose step is still not finite with finite inputs is
+   rescued as above. The fast kernels can afford these tests and not one of their results (see the
+   kernel); the general kernel makes the same tests in a scene without coupling, so that the paths agree.
+   Not rescued: a sum of terms that each fit (g + F/m past the largest real), springs and the callback
+   (they couple particles). The methods' sums are formed so that they overflow only where the step does
+   (RK4's and velocity Verlet's add changes of x and v, each a*h or v*h). */
 /* Out of line and cold: what the common paths below reach only for rare input (see there). */
 #if defined(__GNUC__) || defined(__clang__)
 #define MOTUS__RARE static __attribute__((noinline, cold, unused))
@@ -2057,6 +2063,10 @@ enum {
 #define MOTUS__SHAPE_ALL 0x40000000u
 #define MOTUS__SHAPE_GRAVITY ((unsigned)(MOTUS__T_GRAVITY | MOTUS__T_LINEAR_DRAG | MOTUS__T_DAMPING))
 #define MOTUS__EXACT_SHAPE(shape) ((shape) != MOTUS__SHAPE_ANY && (shape) != MOTUS__SHAPE_ALL)
+/* Whether a kernel stops at a group with a term out of range (see motus__acceleration): a fast kernel
+   always; the general kernel in a scene without coupling, except in the rescue's own runs. Both then stop
+   on the same tests of the same values, and the group goes to motus__group_rescue: the paths agree. */
+#define MOTUS__MAY_STOP(j, coupled) (!(coupled) || (!((j)->terms & MOTUS__T_COUPLED) && !(j)->rescuing))
 #define MOTUS__TERMS(j, shape)                                                                                   \
     ((shape) == MOTUS__SHAPE_ANY   ? (j)->terms                                                                  \
      : (shape) == MOTUS__SHAPE_ALL ? ((j)->terms & ~(unsigned)(MOTUS__T_COUPLED | MOTUS__T_DRY))                 \
@@ -2074,6 +2084,7 @@ typedef struct motus__job {
     motus__lane gravity[3], linear_drag, quadratic_drag, attractor[3], attractor_strength, uniform_inverse_mass;
     motus__lane tether[3], tether_stiffness;
     motus__lane kept, rest_speed, bounds_min[3], bounds_max[3], bounce, largest;
+    motus__lane drag_speed2_limit; /* |v|^2 past it: quadratic drag's textbook formula may overflow (see below) */
     /* step constants: h and the fractions of it the methods use */
     motus__lane h, half_h, half_h2, third_h, sixth_h;
     /* the splittings (Forest-Ruth, McLachlan): D(drift[0]) K(kick[0]) ... K(kick[kicks-1]) D(drift[kicks]) */
@@ -2196,6 +2207,31 @@ static MOTUS__NOINLINE void motus__tether_far(const motus__job *j, const motus__
     }
 }
 
+/* Whether a lane is out of the range of the fast kernels' textbook formulas for quadratic drag and the
+   attractor: their tests (motus__acceleration), on the same values, so that the general kernel stops where
+   a fast kernel does. Out of line: the general kernel's loop already makes the costly terms' call. */
+static MOTUS__NOINLINE int motus__out_of_range(const motus__job *j, const motus__lane *x, const motus__lane *v) {
+    const int dims = 3; /* the general kernel's: a 2D state's z is 0 (a +0 square changes no sum) */
+    motus__lane r[3], r2, cube, pull, speed2;
+    if (j->terms & MOTUS__T_QUADRATIC_DRAG) {
+        speed2 = v[0] * v[0] + v[1] * v[1];
+        if (dims == 3) speed2 = speed2 + v[2] * v[2];
+        if (motus__any((motus__mask)(speed2 > j->drag_speed2_limit))) return 1;
+    }
+    if (j->terms & MOTUS__T_ATTRACTOR) {
+        MOTUS__EACH_D(r[d] = x[d] - j->attractor[d];);
+        r2 = r[0] * r[0] + r[1] * r[1];
+        if (dims == 3) r2 = r2 + r[2] * r[2];
+        cube = r2 * motus__sqrt(r2);
+        pull = j->attractor_strength / cube;
+        if (motus__any((motus__mask)(cube > j->largest) |
+                       (motus__mask)(cube < motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL)) |
+                       (motus__mask)(pull > j->largest)))
+            return 1;
+    }
+    return 0;
+}
+
 /* The acceleration at a stage, from the terms that do not couple particles, plus the stage's coupled force
    (springs, callback) when there is one. base = F*(1/m) of the accumulated force, or 0. Terms that are
    off are skipped, not added as zero (which would turn a -0 into +0): the same bits whatever path. */
@@ -2213,14 +2249,16 @@ MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, con
         MOTUS__EACH_D(a[d] = j->gravity[d];);
     if (t & MOTUS__T_TETHER) { /* a -= (k*(x - tether))*(1/m): the force, then as an accumulated force */
         motus__lane pull[3];
-        motus__mask overflowed = (motus__mask)(zero != zero);
+        motus__mask overflowed = (motus__mask)(zero != zero), offset_overflowed = overflowed;
         MOTUS__EACH_D(
             const motus__lane offset = x[d] - j->tether[d];
-            overflowed = overflowed | (motus__mask)(offset - offset != zero); /* overflowed (or NaN) */
             pull[d] = (offset * j->tether_stiffness) * inverse_mass;
+            overflowed = overflowed | (motus__mask)(pull[d] - pull[d] != zero); /* overflowed (or NaN) */
+            if (coupled) offset_overflowed = offset_overflowed | (motus__mask)(offset - offset != zero);
         );
-        if (!coupled && motus__any(overflowed)) return 1; /* a fast kernel: stop (see below) */
-        if (motus__any(overflowed)) { /* the general kernel: out of line, through copies (see below) */
+        /* stop (see below): the pull, or x - tether, past the largest real */
+        if (MOTUS__MAY_STOP(j, coupled) && motus__any(overflowed)) return 1;
+        if (coupled && motus__any(offset_overflowed)) { /* the general kernel: out of line, through copies (see below) */
             motus__lane x_copy[3], pull_copy[3], inverse_mass_copy = inverse_mass;
             MOTUS__EACH_D(
                 x_copy[d] = x[d];
@@ -2242,7 +2280,7 @@ MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, con
         if (t & MOTUS__T_QUADRATIC_DRAG) {
             speed2 = v[0] * v[0] + v[1] * v[1];
             if (dims == 3) speed2 = speed2 + v[2] * v[2];
-            if (motus__any((motus__mask)(speed2 > largest))) return 1;
+            if (motus__any((motus__mask)(speed2 > j->drag_speed2_limit))) return 1;
             drag = j->quadratic_drag * motus__sqrt(speed2);
             MOTUS__EACH_D(a[d] = a[d] - v[d] * drag;);
         }
@@ -2267,6 +2305,7 @@ MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, con
             v_copy[d] = v[d];
             a_copy[d] = a[d];
     );
+        if (MOTUS__MAY_STOP(j, coupled) && motus__out_of_range(j, x_copy, v_copy)) return 1; /* as a fast kernel */
         if (dims == 2) motus__costly_terms_2(j, x_copy, v_copy, a_copy);
         else motus__costly_terms_3(j, x_copy, v_copy, a_copy);
         MOTUS__EACH_D(a[d] = a_copy[d];);
@@ -2627,7 +2666,7 @@ MOTUS__KI void motus__group_finish(const motus__job *j, motus__group *g, const i
                 motus__group_substep_end(j, &g, &check, dims, shape);                                            \
             }                                                                                                    \
             if (s == j->substeps) motus__group_finish(j, &g, dims, contiguous, shape);                           \
-            else if (!coupled) break; /* a fast kernel's term out of range: the group to motus__group_rescue */  \
+            else if (MOTUS__MAY_STOP(j, coupled)) break; /* a term out of range: to motus__group_rescue */      \
         }                                                                                                        \
         if (i < end_here) /* stopped: the group at i for motus__group_rescue */                                  \
             return MOTUS__STOPPED_AT(i) | !motus_real_is_finite(motus__lane_sum(check));                         \
@@ -2723,10 +2762,11 @@ static MOTUS__NOINLINE int motus__general(const motus__job *j, int first, int en
         first += MOTUS__LANES;
     }
 }
-/* The rescue (see THE RESCUE, by motus__step_rescaled) of the group [first, first + n) a fast kernel
-   stopped at: each particle alone. One whose F*(1/m) is finite takes its step in the general kernel, as
-   in any group (its lane computes what it computes alone; the general kernel scales the terms the fast
-   kernel does not). One whose F*(1/m) is not, with finite inputs, is stepped on a
+/* The rescue (see THE RESCUE, by motus__step_rescaled) of the group [first, first + n) a kernel stopped
+   at: each particle alone. One whose F*(1/m) is finite takes its step in the general kernel, as in any
+   group (its lane computes what it computes alone; the general kernel scales the terms the fast kernel
+   does not), without stopping; where that step is not finite and its inputs are, the particle is put back
+   as it was and taken as the next. One whose F*(1/m) is not, with finite inputs, is stepped on a
    copy by the general kernel with the job in time units of 2^-s s (1/m, the tether's strength and drag
    rates times 2^-s; the force, gravity and the attractor's strength times 2^-2s; the times 2^s; the
    velocity in and out), at each s in turn until its step is finite, then damped and stored as the kernel
@@ -2751,11 +2791,31 @@ static MOTUS__NOINLINE int motus__group_rescue(const motus__job *j, int first, i
             finite &= motus_real_is_finite(j->x[d][at]) & motus_real_is_finite(j->v[d][at]) & motus_real_is_finite(force);
             overflowed |= !motus_real_is_finite(force * inverse_mass);
         }
-        if (!overflowed) { /* its F*(1/m) is finite: the kernel takes it */
-            broken |= motus__general(j, first + k, first + k + 1);
-            continue;
-        }
         if (j->rescuing) finite = 0; /* not again, in the rescue's own run */
+        if (!overflowed) {
+            /* Its F*(1/m) is finite: the general kernel steps it as it is, without stopping (a job marked
+               as the rescue's). If that is not finite while its inputs are (a tether's k*dx*(1/m), an
+               attractor's pull or a quadratic drag past the largest real), it is put back as it was and
+               rescued as below; else that is its step. */
+            motus_real saved_x[3], saved_v[3];
+            int unscaled_broken;
+            for (d = 0; d < dims; ++d) {
+                saved_x[d] = j->x[d][at];
+                saved_v[d] = j->v[d][at];
+            }
+            scaled = *j;
+            scaled.rescuing = 1;
+            unscaled_broken = motus__general(&scaled, first + k, first + k + 1);
+            if (!unscaled_broken || !finite) {
+                broken |= unscaled_broken;
+                continue;
+            }
+            if (!(j->terms & MOTUS__T_DRY))
+                for (d = 0; d < dims; ++d) {
+                    j->x[d][at] = saved_x[d];
+                    j->v[d][at] = saved_v[d];
+                }
+        }
         for (level = 0; finite && level < MOTUS__RESCUE_LEVELS && !done; ++level) {
             const motus_real down = motus__rescue_down(level), up = MOTUS_R(1.0) / down;
             const motus__lane down_lane = motus__splat(down), up_lane = motus__splat(up);
@@ -2778,7 +2838,7 @@ static MOTUS__NOINLINE int motus__group_rescue(const motus__job *j, int first, i
             scaled.tether_stiffness = j->tether_stiffness * down_lane; /* k*dx*(1/m): the other 2^-s in 1/m */
             scaled.h = j->h * up_lane; /* times: 2^s */
             scaled.half_h = j->half_h * up_lane;
-            scaled.half_h2 = (j->half_h2 * up_lane) * up_lane;
+            scaled.half_h2 = (scaled.h * scaled.h) * motus__splat(MOTUS_R(0.5)); /* as motus__job_init: h^2 may underflow */
             scaled.third_h = j->third_h * up_lane;
             scaled.sixth_h = j->sixth_h * up_lane;
             scaled.substep_dt = j->substep_dt * up;
@@ -3228,6 +3288,10 @@ static void motus__job_init(motus__job *j, const motus_scene *scene, const motus
     j->rest_speed = motus__splat((motus_real)(MOTUS_REST_SPEED));
     j->bounce = motus__splat(-scene->restitution);
     j->largest = motus__splat(MOTUS__REAL_MAX);
+    /* c*|v|*v is at most c*|v|^2: below a quarter of the largest real for |v|^2 below this (a margin for
+       the roundings of the square root and the products), and |v|^2 itself below the largest real */
+    j->drag_speed2_limit = motus__splat(scene->quadratic_drag * 4 > 1 ? MOTUS__REAL_MAX / (scene->quadratic_drag * 4)
+                                                                     : MOTUS__REAL_MAX);
     j->h = motus__splat(h);
     j->substep_dt = h;
     j->half_h = motus__splat(h * MOTUS_R(0.5));

@@ -506,6 +506,91 @@ TEST(fast_kernel_hands_a_term_out_of_range_to_the_general_kernel) {
                 }
 }
 
+/* The power of two nearest below x (x > 0, normal). */
+static motus_real power_of_two_below(double x) {
+    int e;
+    (void)frexp(x, &e);
+    return (motus_real)ldexp(1.0, e - 1);
+}
+TEST(step_rescued_where_a_term_overflows) {
+    /* A term's acceleration past the largest real while the step's result fits: a tether of 1e-8 times the
+       largest real (N/m) pulling 1 kg from 1e10 m, an attractor of half the largest real (m^3/s^2) at 0.01 m,
+       and a quadratic drag of 1e-30 times it (1/m) at 1e16 m/s (a = 100, 5e3 and about 30 times the largest
+       real), each at a dt where the step is a twentieth of the motion's time scale. THE RESCUE steps that
+       particle in time units of 2^-s s; a power of two scales exactly, so the result is, bit for bit, the
+       step of the same problem written in units of 2^-32 s (the velocity times 2^-32, the tether's k and
+       the attractor's strength times 2^-64, dt times 2^32), which overflows nowhere. For every method that
+       takes these terms, 2D and 3D, at a particle in a whole group of lanes (5) and at the last one (15):
+       MOTUS_OK (before: MOTUS_ERROR_NOT_FINITE), those bits, also for the particle stepped alone (the
+       general kernel), and the other particles as they are without it, bit for bit. */
+    const motus_real largest = REAL_MAX, unit = (motus_real)ldexp(1.0, 32), unit2 = unit * unit;
+    static small_state b, plain, oracle, copy;
+    int dims, m, at, kind, d;
+    for (dims = 2; dims <= 3; ++dims)
+        for (m = 0; m < MOTUS_METHOD_COUNT; ++m)
+            for (kind = 0; kind < 3; ++kind)
+                for (at = 5; at < 16; at += 10) {
+                    motus_scene scene, scaled;
+                    motus_state alone;
+                    motus_real h;
+                    if (m == MOTUS_EXACT_LINEAR_DRAG) continue; /* takes none of these terms */
+                    memset(&scene, 0, sizeof scene);
+                    scene.method = (motus_method)m;
+                    small_state_fill(&plain);
+                    small_state_bind(&plain, dims, 16);
+                    memcpy(&b, &plain, sizeof b);
+                    small_state_bind(&b, dims, 16);
+                    b.fx[at] = b.fy[at] = b.fz[at] = 0;
+                    b.vx[at] = b.vy[at] = b.vz[at] = 0;
+                    b.y[at] = b.z[at] = 0;
+                    if (kind == 0) { /* w = sqrt(k/m), h = w/20 */
+                        scene.tether_stiffness = largest * (motus_real)1e-8;
+                        b.x[at] = (motus_real)1e10;
+                        h = power_of_two_below(0.05 / sqrt((double)scene.tether_stiffness));
+                    } else if (kind == 1) { /* the orbit's time scale sqrt(r^3/mu) */
+                        scene.attractor = motus_v3(-100, -100, -100);
+                        scene.attractor_strength = largest / 2;
+                        b.x[at] = -100 + (motus_real)0.01, b.y[at] = b.z[at] = -100;
+                        h = power_of_two_below(0.05 * sqrt(1e-6 / (double)scene.attractor_strength));
+                    } else { /* the drag's time scale 1/(c*|v|) */
+                        scene.quadratic_drag = largest * (motus_real)1e-30;
+                        b.vx[at] = (motus_real)1e16;
+                        h = power_of_two_below(0.05 / ((double)scene.quadratic_drag * 1e16));
+                    }
+                    memcpy(&oracle, &b, sizeof b);
+                    small_state_bind(&oracle, dims, 16);
+                    scaled = scene;
+                    scaled.tether_stiffness = scene.tether_stiffness / unit2;
+                    scaled.attractor_strength = scene.attractor_strength / unit2;
+                    oracle.vx[at] = b.vx[at] / unit;
+                    alone = small_state_one(&oracle, dims, at);
+                    ENSURE_EQ_INT(motus_step(&scaled, &alone, h * unit, NULL, 0), MOTUS_OK);
+                    for (d = 0; d < dims; ++d) alone.velocity[d][0] *= unit;
+                    ENSURE_EQ_INT(motus_step(&scene, &plain.state, h, NULL, 0), MOTUS_OK);
+                    /* alone (a state of 1: the general kernel, which stops at the same test as a fast one) */
+                    memcpy(&copy, &b, sizeof b);
+                    small_state_bind(&copy, dims, 16);
+                    alone = small_state_one(&copy, dims, at);
+                    ENSURE_EQ_INT(motus_step(&scene, &alone, h, NULL, 0), MOTUS_OK);
+                    ENSURE(same_bytes(&copy.x[at], &oracle.x[at], sizeof b.x[at]) && same_bytes(&copy.vx[at], &oracle.vx[at], sizeof b.x[at]));
+                    ENSURE_EQ_INT(motus_step(&scene, &b.state, h, NULL, 0), MOTUS_OK);
+                    if (!(same_bytes(&b.x[at], &oracle.x[at], sizeof b.x[at]) && same_bytes(&b.vx[at], &oracle.vx[at], sizeof b.x[at]) &&
+                          same_bytes(&b.y[at], &oracle.y[at], sizeof b.x[at]) && same_bytes(&b.vy[at], &oracle.vy[at], sizeof b.x[at]) &&
+                          (dims == 2 || (same_bytes(&b.z[at], &oracle.z[at], sizeof b.x[at]) &&
+                                         same_bytes(&b.vz[at], &oracle.vz[at], sizeof b.x[at]))))) {
+                        fprintf(stderr, "  %s, %dD, particle %d, term %d: x %.9g v %.9g, in units of 2^-32 s x %.9g v %.9g\n",
+                                method_name((motus_method)m), dims, at, kind, (double)b.x[at], (double)b.vx[at],
+                                (double)oracle.x[at], (double)oracle.vx[at]);
+                        motus_test_failures++;
+                    }
+                    ENSURE(b.vx[at] != 0 && motus_real_is_finite(b.vx[at])); /* it moved, and not to a NaN */
+                    if (!small_state_same_but(&b, &plain, at)) {
+                        fprintf(stderr, "  %s, %dD, term %d: a particle changed by its neighbour's rescue\n",
+                                method_name((motus_method)m), dims, kind);
+                        motus_test_failures++;
+                    }
+                }
+}
 TEST(particle_step_rescued_as_the_engine) {
     /* motus_particle_step where F*(1/m) overflows and a*dt fits (F = largest/4 on 0.01 kg, 1 ms): OK, the
        velocity right, and the bits of the engine's semi-implicit Euler on the same particle (2D and 3D);
@@ -955,7 +1040,8 @@ TEST(attractor_pull_of_a_strength_near_the_largest_real) {
        each axis (mu*0.9/|r|^3: 0.39*mu in 2D, 0.23*mu in 3D) does not. One step of 1e-3 s from rest with a
        method whose first stage is the only one the velocity sees at order 0 (Euler): v = a*dt to 1e-5,
        MOTUS_OK. Before, the pull was infinite: NOT_FINITE (OVERFLOW checked). And at r = (0.5, 0): the pull
-       mu/0.25 itself overflows, so the step still refuses it. */
+       mu/0.25 itself overflows, and the step of 1 ms is rescued; one of 1 s, whose velocity does not fit
+       either, is refused. */
     static const motus_method methods[2] = {MOTUS_SEMI_IMPLICIT_EULER, MOTUS_EXPLICIT_EULER};
     int m, dims;
     for (dims = 2; dims <= 3; ++dims)
@@ -982,10 +1068,16 @@ TEST(attractor_pull_of_a_strength_near_the_largest_real) {
                     motus_test_failures++;
                 }
             }
-            /* the pull itself past the largest real: refused (NOT_FINITE, or OVERFLOW when checked), though
-               the velocity of 1 ms fits (only F*(1/m) is rescued: see THE RESCUE) */
+            /* the pull itself past the largest real (mu/0.25) where the velocity of 1 ms fits: rescued (THE
+               RESCUE; before, refused), v = -(mu*1e-3)/0.25 */
             x[0] = (motus_real)0.5, y[0] = 0, z[0] = 0, vx[0] = vy[0] = vz[0] = 0;
-            ENSURE(motus_step(&scene, &state, (motus_real)1e-3, NULL, 0) != MOTUS_OK);
+            ENSURE_EQ_INT(motus_step(&scene, &state, (motus_real)1e-3, NULL, 0), MOTUS_OK);
+            ENSURE(fabs((double)vx[0] / (-((double)scene.attractor_strength * 1e-3) / 0.25) - 1) <= 1e-5);
+            ENSURE(vy[0] == 0 && vz[0] == 0);
+            /* where the velocity of the step does not fit either (1 s): refused (NOT_FINITE, or OVERFLOW
+               when checked) */
+            x[0] = (motus_real)0.5, y[0] = 0, z[0] = 0, vx[0] = vy[0] = vz[0] = 0;
+            ENSURE(motus_step(&scene, &state, 1, NULL, 0) != MOTUS_OK);
         }
 }
 
@@ -1145,6 +1237,7 @@ static const motus_test_case TESTS[] = {
     TEST_CASE(particle_step_overflow_near_max),
     TEST_CASE(step_overflow_near_max_one_method_per_family),
     TEST_CASE(step_rescued_where_only_an_intermediate_overflows),
+    TEST_CASE(step_rescued_where_a_term_overflows),
     TEST_CASE(particle_step_rescued_as_the_engine),
     TEST_CASE(method_sums_overflow_only_where_the_step_does),
     TEST_CASE(fast_kernel_hands_a_term_out_of_range_to_the_general_kernel),
