@@ -76,8 +76,9 @@
      nothing was written, with one exception: without MOTUS_CHECKED (>>config), motus_step (and
      motus_step_range) on particle data that is NaN or Inf, or that overflows, has written the step when
      it returns MOTUS_ERROR_NOT_FINITE (it finds out while it writes, to stay a single pass; a particle
-     whose force or inverse mass is NaN or Inf, or whose F*(1/m) overflows and cannot be rescued (THE
-     RESCUE), is found before and left as it was, except in scenes with springs or a callback), and it
+     whose force or inverse mass is NaN or Inf, or whose F*(1/m) or a term's acceleration (tether,
+     attractor, quadratic drag) overflows and cannot be rescued (THE RESCUE), is found before and left as
+     it was, except in scenes with springs or a callback), and it
      does not look for a negative inverse mass (motus_state_check and MOTUS_CHECKED do). dt == 0 is a
      valid step of nothing (NaN or Inf in the state is still reported); a count of 0 is valid and does
      nothing.
