@@ -2112,8 +2112,8 @@ MOTUS__KI motus__lane motus__largest_magnitude(const motus__lane *c, const int d
     }
     return largest;
 }
-MOTUS__KI void motus__costly_terms(const motus__job *j, const motus__lane *x, const motus__lane *v, motus__lane *a,
-                                   const int dims) {
+MOTUS__KI int motus__costly_terms(const motus__job *j, const motus__lane *x, const motus__lane *v, motus__lane *a,
+                                  const int dims, const int may_stop) {
     const unsigned t = j->terms;
     const motus__lane zero = motus__splat(0);
     int d;
@@ -2121,6 +2121,9 @@ MOTUS__KI void motus__costly_terms(const motus__job *j, const motus__lane *x, co
         motus__lane speed2 = v[0] * v[0] + v[1] * v[1], speed, drag;
         motus__mask overflowed;
         if (dims == 3) speed2 = speed2 + v[2] * v[2];
+        /* the fast kernels' test (see motus__acceleration), on the same value: the general kernel stops where
+           they do (MOTUS__MAY_STOP) */
+        if (may_stop && motus__any((motus__mask)(speed2 > j->drag_speed2_limit))) return 1;
         speed = motus__sqrt(speed2);
         /* |v|^2 overflows from |v| = 1.8e19 m/s in float, where c*|v|*v may not (a small c): there |v| is
            s*sqrt(sum (v_d/s)^2) with s = max|v_d|, as for the attractor below. Only the lanes that overflowed
@@ -2156,6 +2159,7 @@ MOTUS__KI void motus__costly_terms(const motus__job *j, const motus__lane *x, co
            and u = r/s (|u| in [1, sqrt(3)]), which forms neither r^2 nor |r|^3. */
         scaled = (motus__mask)(cube > j->largest) |
                  (motus__mask)(cube < motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL)) | (motus__mask)(pull > j->largest);
+        if (may_stop && motus__any(scaled)) return 1; /* the fast kernels' test, as above */
         if (motus__any(scaled)) {
             motus__lane s, inverse_s, u2, u[3], scaled_pull;
             motus__mask at_centre;
@@ -2180,19 +2184,20 @@ MOTUS__KI void motus__costly_terms(const motus__job *j, const motus__lane *x, co
         }
         for (d = 0; d < dims; ++d) a[d] = a[d] - r[d] * pull;
     }
+    return 0;
 }
 #if defined(__GNUC__) || defined(__clang__)
 #define MOTUS__NOINLINE __attribute__((noinline))
 #else
 #define MOTUS__NOINLINE
 #endif
-static MOTUS__NOINLINE void motus__costly_terms_2(const motus__job *j, const motus__lane *x, const motus__lane *v,
-                                                  motus__lane *a) {
-    motus__costly_terms(j, x, v, a, 2);
+static MOTUS__NOINLINE int motus__costly_terms_2(const motus__job *j, const motus__lane *x, const motus__lane *v,
+                                                 motus__lane *a, int may_stop) {
+    return motus__costly_terms(j, x, v, a, 2, may_stop);
 }
-static MOTUS__NOINLINE void motus__costly_terms_3(const motus__job *j, const motus__lane *x, const motus__lane *v,
-                                                  motus__lane *a) {
-    motus__costly_terms(j, x, v, a, 3);
+static MOTUS__NOINLINE int motus__costly_terms_3(const motus__job *j, const motus__lane *x, const motus__lane *v,
+                                                 motus__lane *a, int may_stop) {
+    return motus__costly_terms(j, x, v, a, 3, may_stop);
 }
 
 /* The tether's pull where x - tether overflowed (both beyond half the largest real, on opposite sides):
@@ -2206,31 +2211,6 @@ static MOTUS__NOINLINE void motus__tether_far(const motus__job *j, const motus__
         const motus__lane scaled = (((x[d] * half - j->tether[d] * half) * j->tether_stiffness) * *inverse_mass) * two;
         pull[d] = motus__select((motus__mask)(offset - offset != zero), scaled, pull[d]);
     }
-}
-
-/* Whether a lane is out of the range of the fast kernels' textbook formulas for quadratic drag and the
-   attractor: their tests (motus__acceleration), on the same values, so that the general kernel stops where
-   a fast kernel does. Out of line: the general kernel's loop already makes the costly terms' call. */
-static MOTUS__NOINLINE int motus__out_of_range(const motus__job *j, const motus__lane *x, const motus__lane *v) {
-    const int dims = 3; /* the general kernel's: a 2D state's z is 0 (a +0 square changes no sum) */
-    motus__lane r[3], r2, cube, pull, speed2;
-    if (j->terms & MOTUS__T_QUADRATIC_DRAG) {
-        speed2 = v[0] * v[0] + v[1] * v[1];
-        if (dims == 3) speed2 = speed2 + v[2] * v[2];
-        if (motus__any((motus__mask)(speed2 > j->drag_speed2_limit))) return 1;
-    }
-    if (j->terms & MOTUS__T_ATTRACTOR) {
-        MOTUS__EACH_D(r[d] = x[d] - j->attractor[d];);
-        r2 = r[0] * r[0] + r[1] * r[1];
-        if (dims == 3) r2 = r2 + r[2] * r[2];
-        cube = r2 * motus__sqrt(r2);
-        pull = j->attractor_strength / cube;
-        if (motus__any((motus__mask)(cube > j->largest) |
-                       (motus__mask)(cube < motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL)) |
-                       (motus__mask)(pull > j->largest)))
-            return 1;
-    }
-    return 0;
 }
 
 /* The acceleration at a stage, from the terms that do not couple particles, plus the stage's coupled force
@@ -2306,9 +2286,10 @@ MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, con
             v_copy[d] = v[d];
             a_copy[d] = a[d];
     );
-        if (MOTUS__MAY_STOP(j, coupled) && motus__out_of_range(j, x_copy, v_copy)) return 1; /* as a fast kernel */
-        if (dims == 2) motus__costly_terms_2(j, x_copy, v_copy, a_copy);
-        else motus__costly_terms_3(j, x_copy, v_copy, a_copy);
+        /* in a scene without coupling, the general kernel stops where a fast kernel would (MOTUS__MAY_STOP) */
+        if (dims == 2 ? motus__costly_terms_2(j, x_copy, v_copy, a_copy, MOTUS__MAY_STOP(j, coupled))
+                      : motus__costly_terms_3(j, x_copy, v_copy, a_copy, MOTUS__MAY_STOP(j, coupled)))
+            return 1;
         MOTUS__EACH_D(a[d] = a_copy[d];);
     }
     if (coupled && (t & MOTUS__T_COUPLED))
