@@ -1883,6 +1883,9 @@ typedef motus_real motus__lane_unaligned __attribute__((vector_size(MOTUS_SIMD_B
     !(defined(__GNUC__) && !defined(__clang__) && !defined(__SSE4_1__) && defined(MOTUS_DOUBLE))
 typedef char motus__mask_bytes __attribute__((vector_size(16)));
 #define MOTUS__VECTOR_ANY(mask) (__builtin_ia32_pmovmskb128((motus__mask_bytes)(mask)) != 0)
+#elif defined(__SSE2__) && MOTUS_SIMD_BYTES == 16 && defined(MOTUS_DOUBLE)
+typedef double motus__mask_doubles __attribute__((vector_size(16)));
+#define MOTUS__VECTOR_ANY(mask) motus__any_sse2_doubles(mask)
 #elif defined(__AVX__) && MOTUS_SIMD_BYTES == 32
 typedef float motus__mask_bytes __attribute__((vector_size(32)));
 #define MOTUS__VECTOR_ANY(mask) (__builtin_ia32_movmskps256((motus__mask_bytes)(mask)) != 0)
@@ -1988,6 +1991,21 @@ MOTUS__KI motus__lane motus__select(motus__mask mask, motus__lane a, motus__lane
 #else
     return mask ? a : b;
 #endif
+}
+#if defined(MOTUS__VECTOR_ANY) && defined(__SSE2__) && MOTUS_SIMD_BYTES == 16 && defined(MOTUS_DOUBLE) && \
+    defined(__GNUC__) && !defined(__clang__) && !defined(__SSE4_1__)
+MOTUS__KI int motus__any_sse2_doubles(motus__mask mask) {
+    __asm__("" : "+x"(mask));
+    return __builtin_ia32_movmskpd((motus__mask_doubles)mask) != 0;
+}
+#endif
+/* a | b for two comparisons' masks. Through MOTUS__MASK_BARRIER where GCC (16-byte doubles, SSE2 without
+   SSE4.1) would otherwise rebuild each mask lane by lane (a move to a general register, and, neg, and back)
+   before the or. */
+MOTUS__KI motus__mask motus__either(motus__mask a, motus__mask b) {
+    MOTUS__MASK_BARRIER(a);
+    MOTUS__MASK_BARRIER(b);
+    return a | b;
 }
 /* Whether any lane of the mask is set. */
 MOTUS__KI int motus__any(motus__mask mask) {
@@ -2157,8 +2175,9 @@ MOTUS__KI int motus__costly_terms(const motus__job *j, const motus__lane *x, con
            their digits (and at the attractor itself they are 0); mu/|r|^3 overflows for mu near the largest
            real at under 1 m, where mu*r/|r|^3 may not. Those lanes take mu*u/(s^2*|u|^3) with s = max|r_d|
            and u = r/s (|u| in [1, sqrt(3)]), which forms neither r^2 nor |r|^3. */
-        scaled = (motus__mask)(cube > j->largest) |
-                 (motus__mask)(cube < motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL)) | (motus__mask)(pull > j->largest);
+        scaled = motus__either(motus__either((motus__mask)(cube > j->largest),
+                                             (motus__mask)(cube < motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL))),
+                               (motus__mask)(pull > j->largest));
         if (may_stop && motus__any(scaled)) return 1; /* the fast kernels' test, as above */
         if (motus__any(scaled)) {
             motus__lane s, inverse_s, u2, u[3], scaled_pull;
@@ -2229,16 +2248,17 @@ MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, con
     else
         MOTUS__EACH_D(a[d] = j->gravity[d];);
     if (t & MOTUS__T_TETHER) { /* a -= (k*(x - tether))*(1/m): the force, then as an accumulated force */
-        motus__lane pull[3];
-        motus__mask overflowed = (motus__mask)(zero != zero), offset_overflowed = overflowed;
+        motus__lane pull[3], zeros = zero; /* zeros: 0, or NaN where a pull overflowed (or is NaN) */
+        motus__mask offset_overflowed = (motus__mask)(zero != zero);
         MOTUS__EACH_D(
             const motus__lane offset = x[d] - j->tether[d];
             pull[d] = (offset * j->tether_stiffness) * inverse_mass;
-            overflowed = overflowed | (motus__mask)(pull[d] - pull[d] != zero); /* overflowed (or NaN) */
+            zeros = zeros + (pull[d] - pull[d]);
             if (coupled) offset_overflowed = offset_overflowed | (motus__mask)(offset - offset != zero);
         );
-        /* stop (see below): the pull, or x - tether, past the largest real */
-        if (MOTUS__MAY_STOP(j, coupled) && motus__any(overflowed)) return 1;
+        /* stop (see below): the pull, or x - tether, past the largest real. One comparison of a sum of
+           zeros, not one a component: their masks' or cost GCC a lane-by-lane rebuild in double. */
+        if (MOTUS__MAY_STOP(j, coupled) && motus__any((motus__mask)(zeros != zero))) return 1;
         if (coupled && motus__any(offset_overflowed)) { /* the general kernel: out of line, through copies (see below) */
             motus__lane x_copy[3], pull_copy[3], inverse_mass_copy = inverse_mass;
             MOTUS__EACH_D(
@@ -2271,9 +2291,9 @@ MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, con
             if (dims == 3) r2 = r2 + r[2] * r[2];
             cube = r2 * motus__sqrt(r2);
             pull = j->attractor_strength / cube;
-            if (motus__any((motus__mask)(cube > largest) |
-                           (motus__mask)(cube < motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL)) |
-                           (motus__mask)(pull > largest)))
+            if (motus__any(motus__either(motus__either((motus__mask)(cube > largest),
+                                                       (motus__mask)(cube < motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL))),
+                                         (motus__mask)(pull > largest))))
                 return 1;
             MOTUS__EACH_D(a[d] = a[d] - r[d] * pull;);
         }
@@ -2494,7 +2514,7 @@ MOTUS__KI void motus__walls_axis(const motus__job *j, motus__lane *x_in, motus__
    with the walls tested at run time. */
 MOTUS__KI void motus__walls(const motus__job *j, motus__lane *x, motus__lane *v, const int dims) {
     MOTUS__EACH_D(
-        if (motus__any((motus__mask)(x[d] < j->bounds_min[d]) | (motus__mask)(x[d] > j->bounds_max[d])))
+        if (motus__any(motus__either((motus__mask)(x[d] < j->bounds_min[d]), (motus__mask)(x[d] > j->bounds_max[d]))))
             motus__walls_axis(j, &x[d], &v[d], d);
     );
 }
@@ -2570,9 +2590,10 @@ MOTUS__KI void motus__group_substep_end(const motus__job *j, motus__group *g, mo
     if (t & MOTUS__T_BOUNDS) {
         /* Only a group with a lane past a wall (a NaN is past none) makes the call: out of line, through
            copies, as the costly terms. */
-        motus__mask past = (motus__mask)(g->x[0] < j->bounds_min[0]) | (motus__mask)(g->x[0] > j->bounds_max[0]);
+        motus__mask past = motus__either((motus__mask)(g->x[0] < j->bounds_min[0]), (motus__mask)(g->x[0] > j->bounds_max[0]));
         MOTUS__EACH_D(
-            if (d > 0) past = past | (motus__mask)(g->x[d] < j->bounds_min[d]) | (motus__mask)(g->x[d] > j->bounds_max[d]);
+            if (d > 0) past = motus__either(motus__either(past, (motus__mask)(g->x[d] < j->bounds_min[d])),
+                                            (motus__mask)(g->x[d] > j->bounds_max[d]));
         );
         if (motus__any(past)) {
             motus__lane x_copy[3], v_copy[3];
