@@ -2248,18 +2248,18 @@ MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, con
     else
         MOTUS__EACH_D(a[d] = j->gravity[d];);
     if (t & MOTUS__T_TETHER) { /* a -= (k*(x - tether))*(1/m): the force, then as an accumulated force */
-        motus__lane pull[3], zeros = zero; /* zeros: 0, or NaN where a pull overflowed (or is NaN) */
-        motus__mask offset_overflowed = (motus__mask)(zero != zero);
+        /* zeros: 0, or NaN where a pull overflowed (or is NaN); offset_zeros the same for x - tether */
+        motus__lane pull[3], zeros = zero, offset_zeros = zero;
         MOTUS__EACH_D(
             const motus__lane offset = x[d] - j->tether[d];
             pull[d] = (offset * j->tether_stiffness) * inverse_mass;
             zeros = zeros + (pull[d] - pull[d]);
-            if (coupled) offset_overflowed = offset_overflowed | (motus__mask)(offset - offset != zero);
+            if (coupled) offset_zeros = offset_zeros + (offset - offset);
         );
         /* stop (see below): the pull, or x - tether, past the largest real. One comparison of a sum of
            zeros, not one a component: their masks' or cost GCC a lane-by-lane rebuild in double. */
         if (MOTUS__MAY_STOP(j, coupled) && motus__any((motus__mask)(zeros != zero))) return 1;
-        if (coupled && motus__any(offset_overflowed)) { /* the general kernel: out of line, through copies (see below) */
+        if (coupled && motus__any((motus__mask)(offset_zeros != zero))) { /* the general kernel: out of line, through copies (see below) */
             motus__lane x_copy[3], pull_copy[3], inverse_mass_copy = inverse_mass;
             MOTUS__EACH_D(
                 x_copy[d] = x[d];
