@@ -558,13 +558,15 @@ int main(int argc, char **argv) {
     // Pareto front over every line (both precisions) and dt, per problem.
     std::vector<std::vector<std::pair<double, std::string> > > pareto(PROBLEM_COUNT); // (cost, label@dt)
     std::map<std::string, int> pareto_problems; // label -> problems where it has a front point
+    struct point {
+        double cost, error;
+        size_t line;
+        double dt;
+    };
+    std::vector<std::vector<point> > points(PROBLEM_COUNT); // every (cost, error), per problem
+    std::vector<std::vector<point> > front_points(PROBLEM_COUNT);
     for (int which = 0; which < PROBLEM_COUNT; ++which) {
-        struct point {
-            double cost, error;
-            size_t line;
-            double dt;
-        };
-        std::vector<point> all;
+        std::vector<point> &all = points[which];
         for (size_t li = 0; li < lines.size(); ++li) {
             const cell &c = cells[li][which];
             if (!c.applies || !std::isfinite(c.ns)) continue;
@@ -580,6 +582,7 @@ int main(int argc, char **argv) {
         for (const point &pt : all) {
             if (!(pt.error < best_error)) continue;
             best_error = pt.error;
+            front_points[which].push_back(pt);
             const std::string label = lines[pt.line].label();
             pareto[which].push_back(std::make_pair(pt.cost, label + " @1/" + fmt("%.0f", 1 / pt.dt)));
             if (!seen[label]++) ++pareto_problems[label];
@@ -788,6 +791,33 @@ int main(int argc, char **argv) {
             int motus_points = 0;
             for (const auto &pt : pareto[which]) motus_points += pt.second.compare(0, 6, "motus ") == 0;
             md << " (motus: " << motus_points << " of " << pareto[which].size() << " front points) |\n";
+        }
+        // The criterion: motus on the front at every error down to 1e-8 m where a peer has a point.
+        md << "\nPeer points on the front at errors of 1e-8 m and above, each with the cheapest motus point of "
+              "no larger error, and the cheapest whose error is within a millionth of the peer's (the same method "
+              "at the same dt differs by rounding in the last digits):\n\n";
+        {
+            int listed = 0;
+            for (int which = 0; which < PROBLEM_COUNT; ++which)
+                for (const point &pt : front_points[which]) {
+                    if (lines[pt.line].library == "motus" || pt.error < 1e-8) continue;
+                    double below = INFINITY, near = INFINITY;
+                    for (const point &q : points[which]) {
+                        if (lines[q.line].library != "motus") continue;
+                        if (q.error <= pt.error) below = std::min(below, q.cost);
+                        if (q.error <= pt.error * (1 + 1e-6)) near = std::min(near, q.cost);
+                    }
+                    md << "- " << problems[which].name << ": " << lines[pt.line].label() << " @1/"
+                       << fmt("%.0f", 1 / pt.dt) << ", error " << fmt("%.6e", pt.error) << " m, cost "
+                       << fmt("%.0f", pt.cost) << " ns; motus at no larger error: "
+                       << (std::isfinite(below) ? fmt("%.0f", below) + " ns" : std::string("none"))
+                       << "; within a millionth: "
+                       << (std::isfinite(near) ? fmt("%.0f", near) + " ns (" + fmt("%.2f", near / pt.cost) + "x)"
+                                               : std::string("none"))
+                       << "\n";
+                    ++listed;
+                }
+            if (!listed) md << "- none: motus holds the front at every error of 1e-8 m and above\n";
         }
         md << "\nProblems on which each method has a front point: ";
         {
