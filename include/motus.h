@@ -2243,10 +2243,8 @@ MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, con
     const motus__lane zero = motus__splat(0);
     /* F/m + g, then - k*v where there is linear drag. Without it, nothing is subtracted: (F/m + g) - v*0 is
        F/m + g for every finite v, since F/m + g is never -0 (g is stored as g + 0). */
-    if ((t & MOTUS__T_LINEAR_DRAG) && j->apply_drag)
-        MOTUS__EACH_D(a[d] = (MOTUS__EXACT_SHAPE(shape) ? j->gravity[d] : base[d] + j->gravity[d]) - v[d] * j->linear_drag;);
-    else
-        MOTUS__EACH_D(a[d] = MOTUS__EXACT_SHAPE(shape) ? j->gravity[d] : base[d] + j->gravity[d];);
+    MOTUS__EACH_D(a[d] = MOTUS__EXACT_SHAPE(shape) ? j->gravity[d] : base[d] + j->gravity[d];);
+    if ((t & MOTUS__T_LINEAR_DRAG) && j->apply_drag) MOTUS__EACH_D(a[d] = a[d] - v[d] * j->linear_drag;);
     if (t & MOTUS__T_TETHER) { /* a -= (k*(x - tether))*(1/m): the force, then as an accumulated force */
         /* zeros: 0, or NaN where a pull overflowed (or is NaN); offset_zeros the same for x - tether */
         motus__lane pull[3], zeros = zero, offset_zeros = zero;
