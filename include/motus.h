@@ -1876,9 +1876,10 @@ typedef motus_real motus__lane_unaligned __attribute__((vector_size(MOTUS_SIMD_B
 #endif
 /* Whether any lane of a mask (each lane all ones or all zeros, as comparisons make them) is set: one
    instruction that gathers the lanes' top bits, where the portable loop moves each lane to a general
-   register (a tether's step 1.3-1.5x faster with -march=native). Not for GCC's 16-byte doubles without
-   SSE4.1: there it rebuilds the mask lane by lane first (see MOTUS__MASK_BARRIER), 13% slower than the
-   loop. */
+   register (a tether's step 1.3-1.5x faster with -march=native). In GCC's 16-byte doubles without SSE4.1
+   (no 64-bit integer comparison) the mask goes through MOTUS__MASK_BARRIER first: without it GCC rebuilt
+   the mask lane by lane (to a general register, and, neg, back) before the gather, 13% slower than the
+   loop, and the same before every or of two masks (motus__either). */
 #if defined(__SSE2__) && MOTUS_SIMD_BYTES == 16 &&                                                              \
     !(defined(__GNUC__) && !defined(__clang__) && !defined(__SSE4_1__) && defined(MOTUS_DOUBLE))
 typedef char motus__mask_bytes __attribute__((vector_size(16)));
