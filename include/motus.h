@@ -2258,7 +2258,8 @@ MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, con
         /* stop (see below): the pull, or x - tether, past the largest real. One comparison of a sum of
            zeros, not one a component: their masks' or cost GCC a lane-by-lane rebuild in double. */
         if (MOTUS__MAY_STOP(j, coupled) && motus__any((motus__mask)(zeros != zero))) return 1;
-        if (coupled && motus__any((motus__mask)(offset_zeros != zero))) { /* the general kernel: out of line, through copies (see below) */
+        if (coupled && motus__any((motus__mask)(offset_zeros != zero))) {
+            /* the general kernel: out of line, through copies (see below) */
             motus__lane x_copy[3], pull_copy[3], inverse_mass_copy = inverse_mass;
             MOTUS__EACH_D(
                 x_copy[d] = x[d];
@@ -2275,7 +2276,7 @@ MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, con
            scales) stops: the kernel hands it to the general kernel, which makes the call. No call in a fast
            kernel's loop: a call, taken or not, makes GCC keep the loop's constants in memory, not in
            registers (the call may use every vector register). */
-        const motus__lane largest = j->largest;
+        const motus__lane largest = j->largest, min_normal = motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL);
         motus__lane r[3], r2, cube, pull, speed2, drag;
         if (t & MOTUS__T_QUADRATIC_DRAG) {
             speed2 = v[0] * v[0] + v[1] * v[1];
@@ -2290,8 +2291,7 @@ MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, con
             if (dims == 3) r2 = r2 + r[2] * r[2];
             cube = r2 * motus__sqrt(r2);
             pull = j->attractor_strength / cube;
-            if (motus__any(motus__either(motus__either((motus__mask)(cube > largest),
-                                                       (motus__mask)(cube < motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL))),
+            if (motus__any(motus__either(motus__either((motus__mask)(cube > largest), (motus__mask)(cube < min_normal)),
                                          (motus__mask)(pull > largest))))
                 return 1;
             MOTUS__EACH_D(a[d] = a[d] - r[d] * pull;);
@@ -2589,7 +2589,8 @@ MOTUS__KI void motus__group_substep_end(const motus__job *j, motus__group *g, mo
     if (t & MOTUS__T_BOUNDS) {
         /* Only a group with a lane past a wall (a NaN is past none) makes the call: out of line, through
            copies, as the costly terms. */
-        motus__mask past = motus__either((motus__mask)(g->x[0] < j->bounds_min[0]), (motus__mask)(g->x[0] > j->bounds_max[0]));
+        motus__mask past =
+            motus__either((motus__mask)(g->x[0] < j->bounds_min[0]), (motus__mask)(g->x[0] > j->bounds_max[0]));
         MOTUS__EACH_D(
             if (d > 0) past = motus__either(motus__either(past, (motus__mask)(g->x[d] < j->bounds_min[d])),
                                             (motus__mask)(g->x[d] > j->bounds_max[d]));
