@@ -1996,7 +1996,7 @@ MOTUS__KI motus__lane motus__select(motus__mask mask, motus__lane a, motus__lane
 #if defined(MOTUS__VECTOR_ANY) && defined(__SSE2__) && MOTUS_SIMD_BYTES == 16 && defined(MOTUS_DOUBLE) && \
     defined(__GNUC__) && !defined(__clang__) && !defined(__SSE4_1__)
 MOTUS__KI int motus__any_sse2_doubles(motus__mask mask) {
-    __asm__("" : "+x"(mask));
+    MOTUS__MASK_BARRIER(mask);
     return __builtin_ia32_movmskpd((motus__mask_doubles)mask) != 0;
 }
 #endif
