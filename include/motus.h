@@ -2120,6 +2120,15 @@ typedef struct motus__job {
 /* The terms with a square root and a division, whole, with the scaling that keeps them right at every
    scale: out of line, called by the general kernel. The fast kernels inline only their textbook formulas
    and hand a group out of those formulas' range to the general kernel (see motus__acceleration). */
+/* The lanes where the attractor's textbook pull mu/|r|^3 is out of its range: |r|^3 past the largest real
+   or below the smallest normal one, or the pull past the largest real. The one test of both the fast kernels
+   (which stop there) and motus__costly_terms (which scales those lanes), so that both stop at the same
+   groups. */
+MOTUS__KI motus__mask motus__pull_out_of_range(motus__lane cube, motus__lane pull, motus__lane largest) {
+    return motus__either(motus__either((motus__mask)(cube > largest),
+                                       (motus__mask)(cube < motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL))),
+                         (motus__mask)(pull > largest));
+}
 /* max |c_d| over the components, the unit in which the costly terms below scale what would overflow */
 MOTUS__KI motus__lane motus__largest_magnitude(const motus__lane *c, const int dims) {
     const motus__lane zero = motus__splat(0);
@@ -2176,9 +2185,7 @@ MOTUS__KI int motus__costly_terms(const motus__job *j, const motus__lane *x, con
            their digits (and at the attractor itself they are 0); mu/|r|^3 overflows for mu near the largest
            real at under 1 m, where mu*r/|r|^3 may not. Those lanes take mu*u/(s^2*|u|^3) with s = max|r_d|
            and u = r/s (|u| in [1, sqrt(3)]), which forms neither r^2 nor |r|^3. */
-        scaled = motus__either(motus__either((motus__mask)(cube > j->largest),
-                                             (motus__mask)(cube < motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL))),
-                               (motus__mask)(pull > j->largest));
+        scaled = motus__pull_out_of_range(cube, pull, j->largest);
         if (may_stop && motus__any(scaled)) return 1; /* the fast kernels' test, as above */
         if (motus__any(scaled)) {
             motus__lane s, inverse_s, u2, u[3], scaled_pull;
@@ -2276,7 +2283,7 @@ MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, con
            scales) stops: the kernel hands it to the general kernel, which makes the call. No call in a fast
            kernel's loop: a call, taken or not, makes GCC keep the loop's constants in memory, not in
            registers (the call may use every vector register). */
-        const motus__lane largest = j->largest, min_normal = motus__splat((motus_real)MOTUS__REAL_MIN_NORMAL);
+        const motus__lane largest = j->largest;
         motus__lane r[3], r2, cube, pull, speed2, drag;
         if (t & MOTUS__T_QUADRATIC_DRAG) {
             speed2 = v[0] * v[0] + v[1] * v[1];
@@ -2291,9 +2298,7 @@ MOTUS__KI int motus__acceleration(const motus__job *j, const motus__lane *x, con
             if (dims == 3) r2 = r2 + r[2] * r[2];
             cube = r2 * motus__sqrt(r2);
             pull = j->attractor_strength / cube;
-            if (motus__any(motus__either(motus__either((motus__mask)(cube > largest), (motus__mask)(cube < min_normal)),
-                                         (motus__mask)(pull > largest))))
-                return 1;
+            if (motus__any(motus__pull_out_of_range(cube, pull, largest))) return 1;
             MOTUS__EACH_D(a[d] = a[d] - r[d] * pull;);
         }
     } else if (t & (MOTUS__T_QUADRATIC_DRAG | MOTUS__T_ATTRACTOR)) {
