@@ -1215,7 +1215,7 @@ MOTUS_DEF void motus__pair_store(void *vector, motus__pair pair) { memcpy(vector
 MOTUS_DEF motus__pair motus__pair_zeros(void) {
     motus__pair zeros = {0, 0};
 #ifdef MOTUS_DOUBLE
-    __asm__("" : "+x"(zeros));
+    MOTUS__OPAQUE(zeros);
 #endif
     return zeros;
 }
@@ -1276,13 +1276,13 @@ MOTUS_DEF int motus__pair_moving(motus__pair v) {
     const motus__pair_bits window = {start, start};
     return start <= most && motus__pair_signs_clear((motus__pair_bits_of(v) << 1) - window);
 }
-/* lo < x < hi in both lanes. In double each comparison's mask goes through an empty asm before the `&`:
+/* lo < x < hi in both lanes. In double each comparison's mask goes through MOTUS__OPAQUE before the `&`:
    GCC 12 otherwise rebuilds the masks lane by lane in general registers (see motus__any_sse2_doubles). */
 MOTUS_DEF int motus__pair_inside(motus__pair x, motus__pair lo, motus__pair hi) {
     motus__pair_bits above = (motus__pair_bits)(lo < x), below = (motus__pair_bits)(x < hi);
 #ifdef MOTUS_DOUBLE
-    __asm__("" : "+x"(above));
-    __asm__("" : "+x"(below));
+    MOTUS__OPAQUE(above);
+    MOTUS__OPAQUE(below);
 #endif
     return motus__pair_all(above & below);
 }
