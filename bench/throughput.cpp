@@ -420,7 +420,7 @@ void measure(const options &o, std::vector<result_row> &rows) {
                     const int warm_up = n >= 1000000 ? 1 : 0;
                     for (int round = -warm_up; round < rounds; ++round) {
                         const size_t count = cells.size(),
-                                     start = round < 0 || count == 0 ? 0 : (size_t)round * count / (size_t)rounds;
+                                     start = round < 0 ? 0 : (size_t)round * count / (size_t)rounds;
                         if (warm_up && count) (void)time_run(w, cells[start], cells[start].steps);
                         for (size_t turn = 0; turn < count; ++turn) {
                             cell &c = cells[(start + turn) % count];

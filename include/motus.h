@@ -1182,8 +1182,8 @@ MOTUS__RARE motus_result motus__particle_bounce_rare(motus_particle *particle, m
    in 3D with z beside the pair) load, compute, test and store x and y as one pair (16 bytes of doubles, 8
    of floats, in an SSE register), as GCC compiles a loop written by hand. The five calls on 5,000
    particles, gcc 12 -O2: 3.1 ns a particle in 2D double where one component at a time took 3.8 (the hand
-   loop: 2.1-2.4), and 1.2-1.4 times the hand loop in every configuration where it was 1.4-1.8 (README,
-   "Performance notes"). The lanes compute what the components did, bit for bit
+   loop: 2.1-2.4), and 1.2-1.4 times the hand loop in every configuration where it was 1.4-1.8
+   (docs/performance-notes.md). The lanes compute what the components did, bit for bit
    (tests/particle_paths.c). The tests:
    - finite: x*0 is a zero where x is finite and NaN where it is not, and a NaN is not equal to itself;
    - moving (damping): (bits << 1) - (the rest speed's bits << 1) has its sign bit clear in each lane for
