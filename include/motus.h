@@ -826,6 +826,41 @@ MOTUS_DEF int motus__fraction_valid(motus_real x) { return x >= 0 && x <= 1; } /
 
 /* ---- particles: written once on motus_vec3; the 2D functions run them with z = 0 ---- */
 MOTUS_DEF motus_vec3 motus__v3_of(motus_vec2 v) { return motus_v3(v.x, v.y, 0); }
+#if defined(__TINYC__) && !defined(MOTUS_DOUBLE)
+/* TCC: tcc 0.9.27 (Debian 12's) stores a returned 12-byte struct, a float motus_vec3, with two 8-byte
+   moves into a 12-byte temporary: 4 bytes past it, over whatever the frame keeps there. In the README's
+   3D loop, motus_particle3_bounce(&ball, motus_v3(-5, 0, -5), motus_v3(5, 20, 5), 0.8f) overwrote the
+   loop's counter and the loop never ended (tests/compile/unit_b.c). Under tcc the functions that return
+   one are macros that return none: each writes the vector into a compound literal of the caller's block
+   through a pointer and reads it back, evaluating each argument once, as the call does. Same arithmetic,
+   same bits. */
+MOTUS_DEF motus_vec3 *motus__v3_into(motus_vec3 *to, motus_real x, motus_real y, motus_real z) {
+    to->x = x;
+    to->y = y;
+    to->z = z;
+    return to;
+}
+MOTUS_DEF motus_vec3 *motus__vec3_add_into(motus_vec3 *to, motus_vec3 a, motus_vec3 b) {
+    return motus__v3_into(to, a.x + b.x, a.y + b.y, a.z + b.z);
+}
+MOTUS_DEF motus_vec3 *motus__vec3_sub_into(motus_vec3 *to, motus_vec3 a, motus_vec3 b) {
+    return motus__v3_into(to, a.x - b.x, a.y - b.y, a.z - b.z);
+}
+MOTUS_DEF motus_vec3 *motus__vec3_scale_into(motus_vec3 *to, motus_vec3 v, motus_real s) {
+    return motus__v3_into(to, v.x * s, v.y * s, v.z * s);
+}
+MOTUS_DEF motus_vec3 *motus__vec3_lerp_into(motus_vec3 *to, motus_vec3 a, motus_vec3 b, motus_real t) {
+    return motus__v3_into(to, a.x + MOTUS__ROUND((b.x - a.x) * t), a.y + MOTUS__ROUND((b.y - a.y) * t),
+                          a.z + MOTUS__ROUND((b.z - a.z) * t));
+}
+#define MOTUS__V3_TEMPORARY (&(motus_vec3){0, 0, 0})
+#define motus_v3(x, y, z) (*motus__v3_into(MOTUS__V3_TEMPORARY, (x), (y), (z)))
+#define motus_vec3_add(a, b) (*motus__vec3_add_into(MOTUS__V3_TEMPORARY, (a), (b)))
+#define motus_vec3_sub(a, b) (*motus__vec3_sub_into(MOTUS__V3_TEMPORARY, (a), (b)))
+#define motus_vec3_scale(v, s) (*motus__vec3_scale_into(MOTUS__V3_TEMPORARY, (v), (s)))
+#define motus_vec3_lerp(a, b, t) (*motus__vec3_lerp_into(MOTUS__V3_TEMPORARY, (a), (b), (t)))
+#define motus__v3_of(v) motus_v3((v).x, (v).y, 0)
+#endif
 MOTUS_DEF motus_vec2 motus__v2_of(motus_vec3 v) { return motus_v2(v.x, v.y); }
 
 MOTUS_DEF motus_result motus__init(motus_vec3 position, motus_real mass, motus_real *inverse_mass) {
