@@ -765,12 +765,30 @@ MOTUS_DEF motus_vec2 motus_v2(motus_real x, motus_real y) {
     v.y = y;
     return v;
 }
+/* The vectors' arithmetic writes through a pointer (motus__*_into), so that tcc can run it without
+   returning a 3D vector: see "TCC" below. */
+MOTUS_DEF motus_vec3 *motus__v3_into(motus_vec3 *to, motus_real x, motus_real y, motus_real z) {
+    to->x = x;
+    to->y = y;
+    to->z = z;
+    return to;
+}
+MOTUS_DEF motus_vec3 *motus__vec3_add_into(motus_vec3 *to, motus_vec3 a, motus_vec3 b) {
+    return motus__v3_into(to, a.x + b.x, a.y + b.y, a.z + b.z);
+}
+MOTUS_DEF motus_vec3 *motus__vec3_sub_into(motus_vec3 *to, motus_vec3 a, motus_vec3 b) {
+    return motus__v3_into(to, a.x - b.x, a.y - b.y, a.z - b.z);
+}
+MOTUS_DEF motus_vec3 *motus__vec3_scale_into(motus_vec3 *to, motus_vec3 v, motus_real s) {
+    return motus__v3_into(to, v.x * s, v.y * s, v.z * s);
+}
+MOTUS_DEF motus_vec3 *motus__vec3_lerp_into(motus_vec3 *to, motus_vec3 a, motus_vec3 b, motus_real t) {
+    return motus__v3_into(to, a.x + MOTUS__ROUND((b.x - a.x) * t), a.y + MOTUS__ROUND((b.y - a.y) * t),
+                          a.z + MOTUS__ROUND((b.z - a.z) * t));
+}
 MOTUS_DEF motus_vec3 motus_v3(motus_real x, motus_real y, motus_real z) {
     motus_vec3 v;
-    v.x = x;
-    v.y = y;
-    v.z = z;
-    return v;
+    return *motus__v3_into(&v, x, y, z);
 }
 MOTUS_DEF motus_vec2 motus_vec2_add(motus_vec2 a, motus_vec2 b) { return motus_v2(a.x + b.x, a.y + b.y); }
 MOTUS_DEF motus_vec2 motus_vec2_sub(motus_vec2 a, motus_vec2 b) { return motus_v2(a.x - b.x, a.y - b.y); }
@@ -783,16 +801,25 @@ MOTUS_DEF motus_real motus_vec2_length(motus_vec2 v) { return MOTUS_SQRT(motus_v
 MOTUS_DEF motus_vec2 motus_vec2_lerp(motus_vec2 a, motus_vec2 b, motus_real t) {
     return motus_v2(a.x + MOTUS__ROUND((b.x - a.x) * t), a.y + MOTUS__ROUND((b.y - a.y) * t));
 }
-MOTUS_DEF motus_vec3 motus_vec3_add(motus_vec3 a, motus_vec3 b) { return motus_v3(a.x + b.x, a.y + b.y, a.z + b.z); }
-MOTUS_DEF motus_vec3 motus_vec3_sub(motus_vec3 a, motus_vec3 b) { return motus_v3(a.x - b.x, a.y - b.y, a.z - b.z); }
-MOTUS_DEF motus_vec3 motus_vec3_scale(motus_vec3 v, motus_real s) { return motus_v3(v.x * s, v.y * s, v.z * s); }
+MOTUS_DEF motus_vec3 motus_vec3_add(motus_vec3 a, motus_vec3 b) {
+    motus_vec3 sum;
+    return *motus__vec3_add_into(&sum, a, b);
+}
+MOTUS_DEF motus_vec3 motus_vec3_sub(motus_vec3 a, motus_vec3 b) {
+    motus_vec3 difference;
+    return *motus__vec3_sub_into(&difference, a, b);
+}
+MOTUS_DEF motus_vec3 motus_vec3_scale(motus_vec3 v, motus_real s) {
+    motus_vec3 scaled;
+    return *motus__vec3_scale_into(&scaled, v, s);
+}
 MOTUS_DEF motus_real motus_vec3_dot(motus_vec3 a, motus_vec3 b) {
     return MOTUS__ROUND(a.x * b.x) + MOTUS__ROUND(a.y * b.y) + MOTUS__ROUND(a.z * b.z);
 }
 MOTUS_DEF motus_real motus_vec3_length(motus_vec3 v) { return MOTUS_SQRT(motus_vec3_dot(v, v)); }
 MOTUS_DEF motus_vec3 motus_vec3_lerp(motus_vec3 a, motus_vec3 b, motus_real t) {
-    return motus_v3(a.x + MOTUS__ROUND((b.x - a.x) * t), a.y + MOTUS__ROUND((b.y - a.y) * t),
-                    a.z + MOTUS__ROUND((b.z - a.z) * t));
+    motus_vec3 between;
+    return *motus__vec3_lerp_into(&between, a, b, t);
 }
 
 /* True unless x is NaN or +-Inf. Reads the exponent bits, so that the check survives -ffast-math (under
@@ -832,27 +859,8 @@ MOTUS_DEF motus_vec3 motus__v3_of(motus_vec2 v) { return motus_v3(v.x, v.y, 0); 
    3D loop, motus_particle3_bounce(&ball, motus_v3(-5, 0, -5), motus_v3(5, 20, 5), 0.8f) overwrote the
    loop's counter and the loop never ended (tests/compile/unit_b.c). Under tcc the functions that return
    one are macros that return none: each writes the vector into a compound literal of the caller's block
-   through a pointer and reads it back, evaluating each argument once, as the call does. Same arithmetic,
-   same bits. */
-MOTUS_DEF motus_vec3 *motus__v3_into(motus_vec3 *to, motus_real x, motus_real y, motus_real z) {
-    to->x = x;
-    to->y = y;
-    to->z = z;
-    return to;
-}
-MOTUS_DEF motus_vec3 *motus__vec3_add_into(motus_vec3 *to, motus_vec3 a, motus_vec3 b) {
-    return motus__v3_into(to, a.x + b.x, a.y + b.y, a.z + b.z);
-}
-MOTUS_DEF motus_vec3 *motus__vec3_sub_into(motus_vec3 *to, motus_vec3 a, motus_vec3 b) {
-    return motus__v3_into(to, a.x - b.x, a.y - b.y, a.z - b.z);
-}
-MOTUS_DEF motus_vec3 *motus__vec3_scale_into(motus_vec3 *to, motus_vec3 v, motus_real s) {
-    return motus__v3_into(to, v.x * s, v.y * s, v.z * s);
-}
-MOTUS_DEF motus_vec3 *motus__vec3_lerp_into(motus_vec3 *to, motus_vec3 a, motus_vec3 b, motus_real t) {
-    return motus__v3_into(to, a.x + MOTUS__ROUND((b.x - a.x) * t), a.y + MOTUS__ROUND((b.y - a.y) * t),
-                          a.z + MOTUS__ROUND((b.z - a.z) * t));
-}
+   through its motus__*_into, which the function calls too, and reads it back, evaluating each argument
+   once, as the call does: the same arithmetic, the same bits. */
 #define MOTUS__V3_TEMPORARY (&(motus_vec3){0, 0, 0})
 #define motus_v3(x, y, z) (*motus__v3_into(MOTUS__V3_TEMPORARY, (x), (y), (z)))
 #define motus_vec3_add(a, b) (*motus__vec3_add_into(MOTUS__V3_TEMPORARY, (a), (b)))
